@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// pcl_wrap INPUT OUTPUT [options]: wraps the points of INPUT and writes the surface to OUTPUT.
+#include "mesh_file.h"
+#include "point_file.h"
+#include "wrap_report.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+
+using namespace pcl_wrap;
+
+void
+printUsage (std::ostream& out)
+{
+  const WrapParameters defaults;
+  out << "usage: pcl_wrap INPUT OUTPUT [options]\n\n"
+         "Wraps the points of INPUT (.pcd .ply .xyz .txt .off .obj) in Edelsbrunner's Wrap surface and\n"
+         "writes it to OUTPUT (.ply .obj .vtk). The output's vertices are the input points in input order,\n"
+         "so a face's indices are input point indices.\n\n"
+         "options:\n"
+         "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts\n"
+         "  --stats               print a summary\n"
+         "  --stats-json FILE     write the statistics, with timings per stage, as JSON\n"
+         "  --threads N           worker threads, 0 = all cores (default "
+      << defaults.num_threads
+      << ")\n"
+         "  --quiet               no progress on the terminal\n"
+         "  -h, --help            this text\n";
+}
+
+struct Options
+{
+  std::string input, output, complex_json, stats_json;
+  bool stats = false, quiet = false;
+  WrapParameters parameters;
+};
+
+/** Parses the command line; exits with 2 (usage) or 0 (--help). */
+Options
+parseOptions (int argc, char** argv)
+{
+  Options o;
+  std::vector<std::string> positional;
+  const auto usageError = [] (const std::string& message) {
+    std::cerr << "pcl_wrap: " << message << " (see pcl_wrap --help)\n";
+    std::exit (2);
+  };
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto value = [&] () -> std::string {
+      if (i + 1 >= argc)
+        usageError (arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help")
+    {
+      printUsage (std::cout);
+      std::exit (0);
+    }
+    else if (arg == "--complex")
+      o.complex_json = value ();
+    else if (arg == "--stats")
+      o.stats = true;
+    else if (arg == "--stats-json")
+      o.stats_json = value ();
+    else if (arg == "--quiet")
+      o.quiet = true;
+    else if (arg == "--threads")
+    {
+      const std::string v = value ();
+      char* end = nullptr;
+      const long n = std::strtol (v.c_str (), &end, 10);
+      if (v.empty () || *end != '\0' || n < 0 || n > 4096)
+        usageError ("--threads takes a whole number from 0 to 4096");
+      o.parameters.num_threads = static_cast<unsigned> (n);
+    }
+    else if (arg.size () > 1 && arg[0] == '-')
+      usageError ("unknown option " + arg);
+    else
+      positional.push_back (arg);
+  }
+  if (positional.size () != 2)
+    usageError ("expected INPUT and OUTPUT");
+  o.input = positional[0];
+  o.output = positional[1];
+  if (!apps::isMeshFormat (o.output))
+    usageError (o.output + ": unknown output format (expected .ply, .obj or .vtk)");
+  return o;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  const Options o = parseOptions (argc, argv);
+  const bool progress = !o.quiet && ::isatty (STDERR_FILENO);
+  try
+  {
+    const std::vector<Point3> points = apps::readPoints (o.input);
+    if (progress)
+      std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input << '\n';
+    const StageObserver observer = [&] (const std::string& stage, double seconds) {
+      if (progress)
+        std::cerr << "  " << stage << " done in " << seconds << " s\n";
+    };
+    const WrapResult result = computeWrap (points, o.parameters, observer);
+
+    apps::writeMesh (o.output, points, result.surface.triangles);
+    if (!o.complex_json.empty ())
+      apps::writeAtomically (o.complex_json, [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
+    if (!o.stats_json.empty ())
+      apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { apps::writeStatisticsJson (out, result.statistics); });
+    if (o.stats)
+      apps::printSummary (std::cout, result.statistics);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "pcl_wrap: " << e.what () << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pcl_wrap::apps
+{
+
+/** \brief A file that cannot be read or written; what() names the file and the problem. */
+struct FileError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/** \brief Reads the points of a file, by extension: .pcd and .ply through PCL's readers, .xyz and
+  * .txt (lines "x y z" or "x y z nx ny nz"; blank lines and # comments skipped), .off and .obj
+  * (vertices only). Coordinates are kept in double precision; point i is the i-th point (data
+  * line) of the file.
+  * \throws FileError when the file is unreadable, empty or malformed */
+std::vector<Point3>
+readPoints (const std::string& path);
+
+} // namespace pcl_wrap::apps

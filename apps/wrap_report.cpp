@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "wrap_report.h"
+
+#include <algorithm>
+#include <array>
+#include <iomanip>
+#include <vector>
+
+namespace pcl_wrap::apps
+{
+namespace
+{
+
+constexpr SimplexClass CLASSES[3] = {SimplexClass::centered, SimplexClass::confident, SimplexClass::equivocal};
+
+template <std::size_t N>
+void
+writeTuples (std::ostream& out, const std::vector<std::array<PointIndex, N>>& tuples)
+{
+  out << '[';
+  for (std::size_t i = 0; i < tuples.size (); ++i)
+  {
+    out << (i ? ",[" : "[");
+    for (std::size_t j = 0; j < N; ++j)
+      out << (j ? "," : "") << tuples[i][j];
+    out << ']';
+  }
+  out << ']';
+}
+
+template <class T>
+void
+writeList (std::ostream& out, const std::vector<T>& values)
+{
+  out << '[';
+  for (std::size_t i = 0; i < values.size (); ++i)
+    out << (i ? "," : "") << values[i];
+  out << ']';
+}
+
+template <std::size_t N>
+std::vector<std::array<PointIndex, N>>
+sortedSimplices (const std::vector<PointIndex>& flat)
+{
+  std::vector<std::array<PointIndex, N>> out (flat.size () / N);
+  for (std::size_t s = 0; s < out.size (); ++s)
+  {
+    std::copy_n (flat.begin () + N * s, N, out[s].begin ());
+    std::sort (out[s].begin (), out[s].end ());
+  }
+  std::sort (out.begin (), out.end ());
+  return out;
+}
+
+} // namespace
+
+void
+writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_points)
+{
+  std::vector<PointIndex> duplicates;
+  for (const auto& d : result.duplicates)
+    duplicates.push_back (d.first);
+  out << "{\"n\":" << num_points << ",\"hidden\":";
+  writeList (out, result.hidden);
+  out << ",\"skipped\":";
+  writeList (out, result.skipped);
+  out << ",\"duplicates\":";
+  writeList (out, duplicates);
+
+  out << ",\"X\":{\"0\":";
+  writeTuples (out, sortedSimplices<1> (result.xSimplices (0)));
+  out << ",\"1\":";
+  writeTuples (out, sortedSimplices<2> (result.xSimplices (1)));
+  out << ",\"2\":";
+  writeTuples (out, sortedSimplices<3> (result.xSimplices (2)));
+  out << ",\"3\":";
+  writeTuples (out, sortedSimplices<4> (result.xSimplices (3)));
+
+  auto triangles = result.surface.triangles;
+  for (auto& t : triangles)
+    std::rotate (t.begin (), std::min_element (t.begin (), t.end ()), t.end ());
+  std::sort (triangles.begin (), triangles.end ());
+  auto edges = result.surface.dangling_edges;
+  for (auto& e : edges)
+    std::sort (e.begin (), e.end ());
+  std::sort (edges.begin (), edges.end ());
+  auto vertices = result.surface.isolated_vertices;
+  std::sort (vertices.begin (), vertices.end ());
+  out << "},\"W\":{\"triangles\":";
+  writeTuples (out, triangles);
+  out << ",\"edges\":";
+  writeTuples (out, edges);
+  out << ",\"vertices\":";
+  writeList (out, vertices);
+
+  out << "},\"class_counts\":{";
+  for (int k = 0; k <= 3; ++k)
+  {
+    out << (k ? "," : "") << '"' << k << "\":{";
+    for (int c = 0; c < 3; ++c)
+      out << (c ? "," : "") << '"' << toString (CLASSES[c]) << "\":" << result.statistics.simplices[k][c];
+    out << '}';
+  }
+  out << "}}\n";
+}
+
+void
+writeStatisticsJson (std::ostream& out, const WrapStatistics& s)
+{
+  out << std::setprecision (9) << "{\"points\":{\"input\":" << s.points_input << ",\"used\":" << s.points_used
+      << ",\"skipped\":" << s.points_skipped << ",\"duplicate\":" << s.points_duplicate
+      << ",\"hidden\":" << s.points_hidden << "},\"triangulation_dimension\":" << s.triangulation_dimension
+      << ",\"simplices\":{";
+  for (int k = 0; k <= 3; ++k)
+  {
+    out << (k ? "," : "") << '"' << k << "\":{";
+    for (int c = 0; c < 3; ++c)
+      out << (c ? "," : "") << '"' << toString (CLASSES[c]) << "\":" << s.simplices[k][c];
+    out << '}';
+  }
+  out << "},\"x_simplices\":{";
+  for (int k = 0; k <= 3; ++k)
+    out << (k ? "," : "") << '"' << k << "\":" << s.x_simplices[k];
+  out << "},\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
+      << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
+      << ",\"isolated_vertices\":" << s.w_isolated_vertices << "},\"timings\":{";
+  for (const StageTiming& t : s.timings)
+    out << '"' << t.stage << "\":" << t.seconds << ',';
+  out << "\"total\":" << s.total_seconds << "}}\n";
+}
+
+void
+printSummary (std::ostream& out, const WrapStatistics& s)
+{
+  std::size_t del[4] = {0, 0, 0, 0};
+  for (int k = 0; k <= 3; ++k)
+    for (int c = 0; c < 3; ++c)
+      del[k] += s.simplices[k][c];
+  out << "points:        " << s.points_input << " given, " << s.points_used << " used, " << s.points_skipped
+      << " skipped (non-finite), " << s.points_duplicate << " duplicate, " << s.points_hidden << " hidden\n"
+      << "Del S:         dimension " << s.triangulation_dimension << ", " << del[0] << " vertices, " << del[1]
+      << " edges, " << del[2] << " triangles, " << del[3] << " tetrahedra\n"
+      << "sinks:         ";
+  for (int k = 0; k <= 3; ++k)
+    out << (k ? ", " : "") << s.simplices[k][0] << " centered " << (k == 0 ? "vertices" : k == 1 ? "edges" : k == 2 ? "triangles" : "tetrahedra");
+  out << "\nX:             " << s.x_simplices[0] << " vertices, " << s.x_simplices[1] << " edges, " << s.x_simplices[2]
+      << " triangles, " << s.x_simplices[3] << " tetrahedra after " << s.collapses << " collapses\n"
+      << "W:             " << s.w_triangles << " triangles, " << s.w_dangling_edges << " dangling edges, "
+      << s.w_isolated_vertices << " isolated vertices\n"
+      << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
+  for (std::size_t i = 0; i < s.timings.size (); ++i)
+    out << (i ? ", " : "") << s.timings[i].stage << ' ' << s.timings[i].seconds;
+  out << ")\n" << std::defaultfloat;
+}
+
+} // namespace pcl_wrap::apps

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/wrap_result.h>
+
+#include <cstddef>
+#include <ostream>
+
+namespace pcl_wrap::apps
+{
+
+/** \brief The complex as JSON: {"n", "hidden", "skipped", "duplicates", "X": {"0".."3"},
+  * "W": {"triangles", "edges", "vertices"}, "class_counts"}. Every simplex of X and every list
+  * sorted; W's triangles keep their orientation (rotated to start at their smallest index). */
+void
+writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_points);
+
+/** \brief The statistics as JSON, with "timings": {"<stage>": seconds, ..., "total": seconds}. */
+void
+writeStatisticsJson (std::ostream& out, const WrapStatistics& stats);
+
+/** \brief A short human summary of the statistics. */
+void
+printSummary (std::ostream& out, const WrapStatistics& stats);
+
+} // namespace pcl_wrap::apps

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/wrap.h>
+
+#include <pcl/common/io.h>
+
+#include <chrono>
+
+namespace pcl_wrap
+{
+
+template <typename PointInT> void
+Wrap<PointInT>::computeResult ()
+{
+  const auto& indices = *indices_;
+  std::vector<Point3> points;
+  points.reserve (indices.size ());
+  for (const auto i : indices)
+  {
+    const PointInT& p = (*input_)[i];
+    points.push_back ({double (p.x), double (p.y), double (p.z)});
+  }
+  result_ = computeWrap (points, parameters_);
+
+  // Positions in `points` -> indices into the input cloud.
+  const auto to_cloud = [&] (PointIndex k) { return static_cast<PointIndex> (indices[k]); };
+  for (auto& t : result_.surface.triangles)
+    for (auto& v : t)
+      v = to_cloud (v);
+  for (auto& e : result_.surface.dangling_edges)
+    for (auto& v : e)
+      v = to_cloud (v);
+  for (auto& v : result_.surface.isolated_vertices)
+    v = to_cloud (v);
+  for (auto& list : result_.complex)
+    for (auto& v : list.vertices)
+      v = to_cloud (v);
+  for (auto& v : result_.skipped)
+    v = to_cloud (v);
+  for (auto& v : result_.hidden)
+    v = to_cloud (v);
+  for (auto& d : result_.duplicates)
+    d = {to_cloud (d.first), to_cloud (d.second)};
+}
+
+template <typename PointInT> void
+Wrap<PointInT>::appendPolygons (std::vector<pcl::Vertices>& polygons)
+{
+  const auto start = std::chrono::steady_clock::now ();
+  polygons.reserve (polygons.size () + result_.surface.triangles.size ());
+  for (const auto& t : result_.surface.triangles)
+  {
+    pcl::Vertices polygon;
+    polygon.vertices.assign (t.begin (), t.end ());
+    polygons.push_back (std::move (polygon));
+  }
+  const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  result_.statistics.timings.push_back ({"mesh", seconds});
+  result_.statistics.total_seconds += seconds;
+}
+
+template <typename PointInT> void
+Wrap<PointInT>::performReconstruction (pcl::PolygonMesh& output)
+{
+  computeResult ();
+  appendPolygons (output.polygons);
+}
+
+template <typename PointInT> void
+Wrap<PointInT>::performReconstruction (pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons)
+{
+  computeResult ();
+  points = *input_;
+  polygons.clear ();
+  appendPolygons (polygons);
+}
+
+} // namespace pcl_wrap
+
+#define PCL_INSTANTIATE_Wrap(T) template class PCL_EXPORTS pcl_wrap::Wrap<T>;

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/wrap_parameters.h>
+#include <pcl_wrap/wrap_result.h>
+
+#include <pcl/surface/reconstruction.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_wrap
+{
+
+/** \brief Edelsbrunner's Wrap surface reconstruction as a PCL surface reconstruction stage.
+  *
+  * Turns an unorganised cloud, with no normals and no parameters to tune, into the surface W:
+  * the boundary of what is left of the Delaunay complex after collapsing it from the outside in
+  * along the flow of empty spheres. W passes through the points; every polygon indexes the
+  * input cloud (PCL's convention: \c output.cloud is the whole input, \c setIndices selects the
+  * points used). Non-finite points are skipped and duplicates kept once; both are reported.
+  *
+  * \code
+  * pcl_wrap::Wrap<pcl::PointXYZ> wrap;
+  * wrap.setInputCloud (cloud);
+  * pcl::PolygonMesh mesh;
+  * wrap.reconstruct (mesh);
+  * \endcode
+  */
+template <typename PointInT>
+class Wrap : public pcl::SurfaceReconstruction<PointInT>
+{
+public:
+  using Ptr = pcl::shared_ptr<Wrap<PointInT>>;
+  using ConstPtr = pcl::shared_ptr<const Wrap<PointInT>>;
+
+  Wrap () { check_tree_ = false; } // Wrap needs no search tree
+
+  /** \brief Sets every parameter at once.
+    * \param[in] parameters the parameters; see WrapParameters for the defaults */
+  void setParameters (const WrapParameters& parameters) { parameters_ = parameters; }
+  /** \brief The parameters in use. */
+  const WrapParameters& getParameters () const { return parameters_; }
+
+  /** \brief Keep the whole complex (Del S with classes and X) in getResult().
+    * \param[in] keep true to keep it (default), false to save memory */
+  void setKeepComplex (bool keep) { parameters_.keep_complex = keep; }
+  /** \brief Worker threads for the parallel stages (0: all cores).
+    * \param[in] num_threads the number of threads */
+  void setNumberOfThreads (unsigned num_threads) { parameters_.num_threads = num_threads; }
+
+  /** \brief The result of the last reconstruct(): W, X, classes, with indices into the input
+    * cloud. */
+  const WrapResult& getResult () const { return result_; }
+  /** \brief The statistics of the last reconstruct(), including timings per stage. */
+  const WrapStatistics& getStatistics () const { return result_.statistics; }
+
+protected:
+  std::string getClassName () const override { return "Wrap"; }
+
+  /** \brief Adds W's triangles to \a output, whose cloud is already the input cloud. */
+  void performReconstruction (pcl::PolygonMesh& output) override;
+
+  /** \brief Copies the input cloud to \a points and W's triangles to \a polygons. */
+  void performReconstruction (pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons) override;
+
+private:
+  /** Runs the construction on input_ / indices_ and fills result_ with cloud indices. */
+  void computeResult ();
+  /** The triangles of result_ as PCL polygons, timed as the "mesh" stage. */
+  void appendPolygons (std::vector<pcl::Vertices>& polygons);
+
+  using pcl::SurfaceReconstruction<PointInT>::check_tree_;
+  using pcl::SurfaceReconstruction<PointInT>::input_;
+  using pcl::SurfaceReconstruction<PointInT>::indices_;
+
+  WrapParameters parameters_;
+  WrapResult result_;
+};
+
+} // namespace pcl_wrap
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl_wrap/impl/wrap.hpp>
+#endif

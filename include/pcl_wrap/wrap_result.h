@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pcl_wrap
+{
+
+/** \brief Index of an input point (into the point array given to the construction, or, from the
+  * PCL class, into the input cloud). */
+using PointIndex = std::uint32_t;
+
+/** \brief The three kinds of Delaunay simplices of the paper's §5 (ALGORITHM.md §3). */
+enum class SimplexClass : std::uint8_t
+{
+  centered,  ///< a sink: not attached, its smallest orthosphere's centre inside it
+  confident, ///< not attached, centre outside it: flows on to its lowest successor
+  equivocal  ///< attached: the flow passes through it, it has exactly one predecessor
+};
+
+/** \brief "centered", "confident" or "equivocal". */
+const char*
+toString (SimplexClass c);
+
+/** \brief The simplices of one dimension of the Delaunay complex Del S. */
+struct SimplexList
+{
+  /** \brief k+1 point indices per simplex; tetrahedra positively oriented, lower simplices in
+    * ascending order. */
+  std::vector<PointIndex> vertices;
+  std::vector<SimplexClass> classes; ///< one per simplex
+  std::vector<std::uint8_t> in_x;    ///< one per simplex: 1 when the simplex is in X
+
+  std::size_t size () const { return classes.size (); }
+};
+
+/** \brief The surface W = Bd X (ALGORITHM.md §5.5), in point indices. */
+struct WrapSurface
+{
+  /** \brief Triangles of X with fewer than two tetrahedra of X behind them, oriented with their
+    * normal pointing away from the tetrahedron behind them (sheets: consistently per sheet). */
+  std::vector<std::array<PointIndex, 3>> triangles;
+  /** \brief Edges of X with no triangle of X on them. */
+  std::vector<std::array<PointIndex, 2>> dangling_edges;
+  /** \brief Vertices of X with no edge of X on them. */
+  std::vector<PointIndex> isolated_vertices;
+};
+
+/** \brief Wall-clock seconds of one stage of the construction. */
+struct StageTiming
+{
+  std::string stage;
+  double seconds = 0.0;
+};
+
+/** \brief What the construction did, in numbers. */
+struct WrapStatistics
+{
+  std::size_t points_input = 0;     ///< points given (after setIndices)
+  std::size_t points_used = 0;      ///< vertices of the triangulation
+  std::size_t points_skipped = 0;   ///< non-finite coordinates or weight
+  std::size_t points_duplicate = 0; ///< same position as a kept point
+  std::size_t points_hidden = 0;    ///< empty power cell (weighted input only)
+  int triangulation_dimension = -1; ///< -1 (no point), 0, 1, 2 or 3
+
+  /** \brief Simplices of Del S per dimension and class: [dimension][class]. */
+  std::array<std::array<std::size_t, 3>, 4> simplices{};
+  /** \brief Simplices of X per dimension. */
+  std::array<std::size_t, 4> x_simplices{};
+  std::size_t collapses = 0;        ///< collapses performed by the retraction
+  std::size_t perturbations = 0;    ///< predicate ties decided by the symbolic perturbation
+
+  std::size_t w_triangles = 0;
+  std::size_t w_dangling_edges = 0;
+  std::size_t w_isolated_vertices = 0;
+
+  /** \brief Seconds per stage, in the order they ran. */
+  std::vector<StageTiming> timings;
+  /** \brief Sum of the stage timings: points in memory to surface (or mesh) in memory. */
+  double total_seconds = 0.0;
+};
+
+/** \brief Everything the construction produces. All indices are point indices. */
+struct WrapResult
+{
+  WrapStatistics statistics;
+  WrapSurface surface;
+  /** \brief Del S by dimension with each simplex's class and membership in X; empty when
+    * WrapParameters::keep_complex is false. */
+  std::array<SimplexList, 4> complex;
+  std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
+  std::vector<PointIndex> hidden;    ///< points with an empty power cell
+  /** \brief (duplicate, kept point at the same position). */
+  std::vector<std::pair<PointIndex, PointIndex>> duplicates;
+
+  /** \brief The simplices of X of dimension k, k+1 point indices each (see SimplexList). */
+  std::vector<PointIndex>
+  xSimplices (int k) const;
+};
+
+} // namespace pcl_wrap

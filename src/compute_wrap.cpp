@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The pipeline: points -> triangulation -> simplicial complex -> classification -> retraction ->
+// boundary. Each arrow is one file of src/detail.
+#include <pcl_wrap/compute_wrap.h>
+
+#include "detail/boundary.h"
+#include "detail/classification.h"
+#include "detail/input_points.h"
+#include "detail/power_predicates.h"
+#include "detail/regular_triangulation.h"
+#include "detail/retraction.h"
+#include "detail/simplicial_complex.h"
+#include "detail/stage_clock.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <memory>
+
+namespace pcl_wrap
+{
+
+const char*
+toString (SimplexClass c)
+{
+  switch (c)
+  {
+  case SimplexClass::centered: return "centered";
+  case SimplexClass::confident: return "confident";
+  case SimplexClass::equivocal: return "equivocal";
+  }
+  return "?";
+}
+
+std::vector<PointIndex>
+WrapResult::xSimplices (int k) const
+{
+  std::vector<PointIndex> out;
+  if (k < 0 || k > 3)
+    return out;
+  const SimplexList& list = complex[k];
+  for (std::size_t s = 0; s < list.size (); ++s)
+    if (list.in_x[s])
+      out.insert (out.end (), list.vertices.begin () + (k + 1) * s, list.vertices.begin () + (k + 1) * (s + 1));
+  return out;
+}
+
+WrapResult
+computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters, const StageObserver& observer)
+{
+  using namespace detail;
+  std::unique_ptr<tbb::global_control> threads;
+  if (parameters.num_threads > 0)
+    threads = std::make_unique<tbb::global_control> (tbb::global_control::max_allowed_parallelism,
+                                                     parameters.num_threads);
+  WrapResult result;
+  WrapStatistics& stats = result.statistics;
+  StageClock clock (stats, observer);
+
+  InputPoints input = selectInputPoints (points, {});
+  stats.points_input = points.size ();
+  stats.points_skipped = input.skipped.size ();
+  stats.points_duplicate = input.duplicates.size ();
+  result.skipped = std::move (input.skipped);
+  result.duplicates = std::move (input.duplicates);
+  clock.stageDone ("input");
+
+  Triangulation triangulation = triangulate (input.positions, input.weights);
+  stats.triangulation_dimension = triangulation.dimension;
+  stats.points_used = triangulation.point_of_vertex.size ();
+  stats.points_hidden = triangulation.hidden.size ();
+  for (std::uint32_t h : triangulation.hidden)
+    result.hidden.push_back (input.input_index[h]);
+  // Vertex id -> input index, and the kept points in vertex order for the predicates.
+  std::vector<PointIndex> input_of_vertex (triangulation.point_of_vertex.size ());
+  std::vector<Point3> vertex_positions (input_of_vertex.size ());
+  std::vector<double> vertex_weights (input_of_vertex.size ());
+  for (std::size_t v = 0; v < input_of_vertex.size (); ++v)
+  {
+    const std::uint32_t p = triangulation.point_of_vertex[v];
+    input_of_vertex[v] = input.input_index[p];
+    vertex_positions[v] = input.positions[p];
+    vertex_weights[v] = input.weights[p];
+  }
+  input = {};
+  clock.stageDone ("triangulation");
+
+  const SimplicialComplex complex (triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
+                                   std::move (triangulation.top_simplices));
+  clock.stageDone ("complex");
+
+  const PowerPredicates predicates (vertex_positions, vertex_weights);
+  const Classification classification = classify (complex, predicates);
+  stats.perturbations = predicates.perturbations ();
+  for (int k = 0; k <= 3; ++k)
+    for (SimplexClass c : classification.classes[k])
+      ++stats.simplices[k][static_cast<int> (c)];
+  clock.stageDone ("classification");
+
+  Retraction x (complex, classification);
+  stats.collapses = x.retract ();
+  clock.stageDone ("collapse");
+
+  const Boundary w = extractBoundary (complex, x);
+  auto& surface = result.surface;
+  surface.triangles.reserve (w.triangles.size ());
+  for (const auto& t : w.triangles)
+    surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
+  for (const auto& e : w.dangling_edges)
+    surface.dangling_edges.push_back ({input_of_vertex[e[0]], input_of_vertex[e[1]]});
+  for (std::uint32_t v : w.isolated_vertices)
+    surface.isolated_vertices.push_back (input_of_vertex[v]);
+  stats.w_triangles = surface.triangles.size ();
+  stats.w_dangling_edges = surface.dangling_edges.size ();
+  stats.w_isolated_vertices = surface.isolated_vertices.size ();
+
+  for (int k = 0; k <= 3; ++k)
+  {
+    SimplexList* list = parameters.keep_complex ? &result.complex[k] : nullptr;
+    if (list)
+    {
+      list->vertices.reserve ((k + 1) * complex.size (k));
+      list->classes = classification.classes[k];
+      list->in_x.resize (complex.size (k));
+    }
+    for (SimplexId s = 0; s < complex.size (k); ++s)
+    {
+      const bool in_x = x.inY ({k, s});
+      stats.x_simplices[k] += in_x;
+      if (!list)
+        continue;
+      list->in_x[s] = in_x;
+      for (int i = 0; i <= k; ++i)
+        list->vertices.push_back (input_of_vertex[complex.vertex (k, s, i)]);
+    }
+  }
+  clock.stageDone ("boundary");
+  return result;
+}
+
+} // namespace pcl_wrap

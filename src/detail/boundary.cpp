@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "boundary.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+// For a positively oriented tetrahedron, the facet opposite local vertex i listed so that its
+// normal points away from vertex i: orientation(a, b, c, v_i) < 0 for (a, b, c) below.
+constexpr int OUTWARD_FACET[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+bool
+hasDirectedEdge (const Triangle& t, std::uint32_t u, std::uint32_t v)
+{
+  for (int i = 0; i < 3; ++i)
+    if (t[i] == u && t[(i + 1) % 3] == v)
+      return true;
+  return false;
+}
+
+/** Orients the sheet triangles (those with no tetrahedron behind them) so that neighbours across
+  * an edge shared by exactly two of them traverse it in opposite directions. */
+void
+orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sheet, std::vector<Triangle>& out)
+{
+  const std::size_t first = out.size ();
+  std::vector<std::pair<SimplexId, std::uint32_t>> edge_uses; // (edge id, index in sheet)
+  for (std::uint32_t i = 0; i < sheet.size (); ++i)
+  {
+    const std::uint32_t* v = complex.vertices (2, sheet[i]);
+    out.push_back ({v[0], v[1], v[2]});
+    for (unsigned mask : {3u, 5u, 6u})
+      edge_uses.emplace_back (complex.face (2, sheet[i], mask).id, i);
+  }
+  std::sort (edge_uses.begin (), edge_uses.end ());
+  std::vector<std::vector<std::uint32_t>> neighbours (sheet.size ());
+  for (std::size_t a = 0; a < edge_uses.size ();)
+  {
+    std::size_t b = a;
+    while (b < edge_uses.size () && edge_uses[b].first == edge_uses[a].first)
+      ++b;
+    if (b - a == 2)
+    {
+      neighbours[edge_uses[a].second].push_back (edge_uses[a + 1].second);
+      neighbours[edge_uses[a + 1].second].push_back (edge_uses[a].second);
+    }
+    a = b;
+  }
+  std::vector<std::uint8_t> done (sheet.size (), 0);
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t root = 0; root < sheet.size (); ++root)
+  {
+    if (done[root])
+      continue;
+    done[root] = 1;
+    stack.push_back (root);
+    while (!stack.empty ())
+    {
+      const std::uint32_t i = stack.back ();
+      stack.pop_back ();
+      const Triangle& t = out[first + i];
+      for (std::uint32_t j : neighbours[i])
+      {
+        if (done[j])
+          continue;
+        done[j] = 1;
+        Triangle& n = out[first + j];
+        // The shared edge, traversed as in t; the neighbour must traverse it the other way.
+        for (int e = 0; e < 3; ++e)
+        {
+          const std::uint32_t u = t[e], w = t[(e + 1) % 3];
+          if (std::count (n.begin (), n.end (), u) && std::count (n.begin (), n.end (), w))
+          {
+            if (hasDirectedEdge (n, u, w))
+              std::swap (n[1], n[2]);
+            break;
+          }
+        }
+        stack.push_back (j);
+      }
+    }
+  }
+}
+
+} // namespace
+
+Boundary
+extractBoundary (const SimplicialComplex& complex, const Retraction& x)
+{
+  Boundary w;
+  for (SimplexId t = 0; t < complex.size (3); ++t)
+  {
+    if (!x.inY ({3, t}))
+      continue;
+    for (int i = 0; i < 4; ++i)
+    {
+      const Simplex f = complex.face (3, t, fullMask (3) & ~(1u << i));
+      if (x.cofacesInY (f, 3) == 1)
+      {
+        const std::uint32_t* v = complex.vertices (3, t);
+        const int* o = OUTWARD_FACET[i];
+        w.triangles.push_back ({v[o[0]], v[o[1]], v[o[2]]});
+      }
+    }
+  }
+  std::vector<SimplexId> sheet;
+  for (SimplexId f = 0; f < complex.size (2); ++f)
+    if (x.inY ({2, f}) && (complex.dimension () < 3 || x.cofacesInY ({2, f}, 3) == 0))
+      sheet.push_back (f);
+  orientSheets (complex, sheet, w.triangles);
+
+  for (SimplexId e = 0; e < complex.size (1); ++e)
+    if (x.inY ({1, e}) && (complex.dimension () < 2 || x.cofacesInY ({1, e}, 2) == 0))
+    {
+      const std::uint32_t* v = complex.vertices (1, e);
+      w.dangling_edges.push_back ({v[0], v[1]});
+    }
+  for (SimplexId v = 0; v < complex.size (0); ++v)
+    if (x.inY ({0, v}) && (complex.dimension () < 1 || x.cofacesInY ({0, v}, 1) == 0))
+      w.isolated_vertices.push_back (v);
+  return w;
+}
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "retraction.h"
+#include "simplicial_complex.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief W = Bd X (ALGORITHM.md §5.5) in vertex ids of the complex. */
+struct Boundary
+{
+  /** \brief Oriented away from the tetrahedron of X behind them; triangles with none behind
+    * them (sheets) oriented consistently across every edge shared by exactly two of them. */
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::array<std::uint32_t, 2>> dangling_edges;
+  std::vector<std::uint32_t> isolated_vertices;
+};
+
+/** \brief The boundary of X, the simplices still in Y after \a x has retracted. */
+Boundary
+extractBoundary (const SimplicialComplex& complex, const Retraction& x);
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "input_points.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace pcl_wrap::detail
+{
+
+InputPoints
+selectInputPoints (const std::vector<Point3>& points, const std::vector<double>& weights)
+{
+  if (!weights.empty () && weights.size () != points.size ())
+    throw std::invalid_argument ("weights: one per point expected");
+  const auto weight = [&] (PointIndex i) { return weights.empty () ? 0.0 : weights[i]; };
+
+  InputPoints s;
+  std::vector<PointIndex> finite;
+  finite.reserve (points.size ());
+  for (PointIndex i = 0; i < points.size (); ++i)
+  {
+    const Point3& p = points[i];
+    if (std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]) && std::isfinite (weight (i)))
+      finite.push_back (i);
+    else
+      s.skipped.push_back (i);
+  }
+
+  // Equal positions become neighbours; among them the largest weight, then the smallest index,
+  // comes first and is the one kept. -0.0 == 0.0 here, as it is for the geometry.
+  std::sort (finite.begin (), finite.end (), [&] (PointIndex a, PointIndex b) {
+    if (points[a] != points[b])
+      return points[a] < points[b];
+    if (weight (a) != weight (b))
+      return weight (a) > weight (b);
+    return a < b;
+  });
+  std::vector<PointIndex> kept;
+  kept.reserve (finite.size ());
+  for (std::size_t k = 0; k < finite.size (); ++k)
+  {
+    if (k > 0 && points[finite[k]] == points[kept.back ()])
+      s.duplicates.emplace_back (finite[k], kept.back ());
+    else
+      kept.push_back (finite[k]);
+  }
+  // Keep input order, so everything downstream is independent of the sort above.
+  std::sort (kept.begin (), kept.end ());
+  std::sort (s.duplicates.begin (), s.duplicates.end ());
+
+  s.positions.reserve (kept.size ());
+  s.weights.reserve (kept.size ());
+  for (PointIndex i : kept)
+  {
+    s.positions.push_back (points[i]);
+    s.weights.push_back (weight (i));
+  }
+  s.input_index = std::move (kept);
+  return s;
+}
+
+} // namespace pcl_wrap::detail

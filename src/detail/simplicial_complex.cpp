@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "simplicial_complex.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+// Local vertex pairs of a tetrahedron's six edges, and the slot of each two-bit mask.
+constexpr int TET_EDGE[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+constexpr int EDGE_SLOT[16] = {-1, -1, -1, 0, -1, 1, 3, -1, -1, 2, 4, -1, 5, -1, -1, -1};
+
+/** Faces of one dimension, bucketed by their lowest vertex: a face is found by a binary search
+  * among the few faces of its lowest vertex, and its id is its position in the table. */
+template <class Key>
+class FaceTable
+{
+public:
+  /** \a each(emit) calls emit(lowest vertex, key of the other vertices) once per face instance. */
+  template <class Enumerate>
+  FaceTable (std::uint32_t num_vertices, const Enumerate& each)
+    : begin_ (num_vertices + 1, 0)
+  {
+    each ([&] (std::uint32_t a, Key) { ++begin_[a + 1]; });
+    for (std::uint32_t a = 0; a < num_vertices; ++a)
+      begin_[a + 1] += begin_[a];
+    keys_.resize (begin_[num_vertices]);
+    std::vector<std::size_t> next (begin_.begin (), begin_.end () - 1);
+    each ([&] (std::uint32_t a, Key k) { keys_[next[a]++] = k; });
+
+    std::size_t out = 0;
+    for (std::uint32_t a = 0; a < num_vertices; ++a)
+    {
+      auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
+      std::sort (first, last);
+      last = std::unique (first, last);
+      begin_[a] = out;
+      out = std::move (first, last, keys_.begin () + out) - keys_.begin ();
+    }
+    begin_[num_vertices] = out;
+    keys_.resize (out);
+    keys_.shrink_to_fit ();
+  }
+
+  std::size_t size () const { return keys_.size (); }
+  std::uint32_t numVertices () const { return static_cast<std::uint32_t> (begin_.size () - 1); }
+  std::size_t begin (std::uint32_t a) const { return begin_[a]; }
+  std::size_t end (std::uint32_t a) const { return begin_[a + 1]; }
+  Key key (std::size_t f) const { return keys_[f]; }
+
+  SimplexId find (std::uint32_t a, Key k) const
+  {
+    auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
+    auto it = std::lower_bound (first, last, k);
+    if (it == last || *it != k)
+      throw std::logic_error ("SimplicialComplex: face of a simplex not found");
+    return static_cast<SimplexId> (it - keys_.begin ());
+  }
+
+private:
+  std::vector<std::size_t> begin_;
+  std::vector<Key> keys_;
+};
+
+std::uint64_t
+pairKey (std::uint32_t b, std::uint32_t c)
+{
+  return (std::uint64_t (b) << 32) | c;
+}
+
+void
+sort3 (std::uint32_t& a, std::uint32_t& b, std::uint32_t& c)
+{
+  if (a > b) std::swap (a, b);
+  if (b > c) std::swap (b, c);
+  if (a > b) std::swap (a, b);
+}
+
+} // namespace
+
+SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
+                                      std::vector<std::uint32_t> top)
+  : dimension_ (dimension)
+{
+  if (dimension < -1 || dimension > 3 || top.size () % (dimension + 1) != 0)
+    throw std::invalid_argument ("SimplicialComplex: bad dimension or top simplex list");
+  if (dimension == -1)
+    return;
+  vertices_[0].resize (num_vertices);
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+    vertices_[0][v] = v;
+  if (dimension == 0)
+    return;
+
+  const std::size_t num_top = top.size () / (dimension + 1);
+  if (dimension == 1)
+  {
+    for (std::size_t e = 0; e < num_top; ++e)
+      if (top[2 * e] > top[2 * e + 1])
+        std::swap (top[2 * e], top[2 * e + 1]);
+    vertices_[1] = std::move (top);
+    return;
+  }
+
+  // dimension 2 or 3: the edges (and, in 3, the triangles) are the faces of the top simplices.
+  const int d = dimension;
+  const FaceTable<std::uint32_t> edges (num_vertices, [&] (auto emit) {
+    for (std::size_t t = 0; t < num_top; ++t)
+      for (int i = 0; i <= d; ++i)
+        for (int j = i + 1; j <= d; ++j)
+        {
+          std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
+          emit (std::min (a, b), std::max (a, b));
+        }
+  });
+  vertices_[1].reserve (2 * edges.size ());
+  for (std::uint32_t a = 0; a < num_vertices; ++a)
+    for (std::size_t f = edges.begin (a); f < edges.end (a); ++f)
+    {
+      vertices_[1].push_back (a);
+      vertices_[1].push_back (edges.key (f));
+    }
+  const auto edge_id = [&] (std::uint32_t a, std::uint32_t b) {
+    return edges.find (std::min (a, b), std::max (a, b));
+  };
+
+  if (d == 2)
+  {
+    for (std::size_t t = 0; t < num_top; ++t)
+      sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
+    vertices_[2] = std::move (top);
+  }
+  else
+  {
+    const FaceTable<std::uint64_t> triangles (num_vertices, [&] (auto emit) {
+      for (std::size_t t = 0; t < num_top; ++t)
+        for (int i = 0; i < 4; ++i)
+        {
+          std::uint32_t v[3], n = 0;
+          for (int j = 0; j < 4; ++j)
+            if (j != i)
+              v[n++] = top[4 * t + j];
+          sort3 (v[0], v[1], v[2]);
+          emit (v[0], pairKey (v[1], v[2]));
+        }
+    });
+    vertices_[2].reserve (3 * triangles.size ());
+    for (std::uint32_t a = 0; a < num_vertices; ++a)
+      for (std::size_t f = triangles.begin (a); f < triangles.end (a); ++f)
+      {
+        const std::uint64_t k = triangles.key (f);
+        vertices_[2].insert (vertices_[2].end (), {a, std::uint32_t (k >> 32), std::uint32_t (k)});
+      }
+    tet_triangles_.resize (4 * num_top);
+    tet_edges_.resize (6 * num_top);
+    for (std::size_t t = 0; t < num_top; ++t)
+    {
+      const std::uint32_t* v = &top[4 * t];
+      for (int i = 0; i < 4; ++i)
+      {
+        std::uint32_t a = v[(i + 1) % 4], b = v[(i + 2) % 4], c = v[(i + 3) % 4];
+        sort3 (a, b, c);
+        tet_triangles_[4 * t + i] = triangles.find (a, pairKey (b, c));
+      }
+      for (int e = 0; e < 6; ++e)
+        tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);
+    }
+    vertices_[3] = std::move (top);
+  }
+
+  const std::size_t num_triangles = size (2);
+  triangle_edges_.resize (3 * num_triangles);
+  for (std::size_t t = 0; t < num_triangles; ++t)
+  {
+    const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
+    triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
+    triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
+    triangle_edges_[3 * t + 2] = edge_id (v[0], v[1]);
+  }
+}
+
+Simplex
+SimplicialComplex::face (int k, SimplexId s, unsigned mask) const
+{
+  const int n = maskSize (mask);
+  if (n == k + 1)
+    return {k, s};
+  if (n == 1)
+    return {0, vertex (k, s, __builtin_ctz (mask))};
+  if (k == 3)
+  {
+    if (n == 3)
+      return {2, tet_triangles_[4 * std::size_t (s) + __builtin_ctz (~mask & 15u)]};
+    return {1, tet_edges_[6 * std::size_t (s) + EDGE_SLOT[mask]]};
+  }
+  // k == 2, n == 2
+  return {1, triangle_edges_[3 * std::size_t (s) + __builtin_ctz (~mask & 7u)]};
+}
+
+} // namespace pcl_wrap::detail

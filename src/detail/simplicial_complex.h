@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Index of a simplex among those of its dimension. */
+using SimplexId = std::uint32_t;
+constexpr SimplexId NO_SIMPLEX = ~SimplexId (0);
+
+/** \brief A simplex named by its dimension and its index in that dimension. */
+struct Simplex
+{
+  int dim;
+  SimplexId id;
+  bool operator== (const Simplex& o) const { return dim == o.dim && id == o.id; }
+};
+
+/** \brief The Delaunay complex in flat arrays, indexed by simplex id per dimension.
+  *
+  * Faces of a k-simplex are named by a *mask* over its k+1 local vertices (bit i = local vertex
+  * i), so that a simplex and all its faces are reached in O(1) without any search. Tetrahedra
+  * keep the triangulation's positive orientation; lower simplices list their vertices in
+  * ascending order. Vertex ids are dense, 0..numVertices()-1.
+  */
+class SimplicialComplex
+{
+public:
+  /** \brief Builds the complex of dimension \a dimension whose top simplices are given, (d+1)
+    * vertex ids each (tetrahedra positively oriented). Every face is created once. */
+  SimplicialComplex (int dimension, std::uint32_t num_vertices, std::vector<std::uint32_t> top_simplices);
+  SimplicialComplex () = default;
+
+  int dimension () const { return dimension_; }
+  std::size_t size (int k) const { return k < 0 || k > 3 ? 0 : vertices_[k].size () / (k + 1); }
+  std::uint32_t numVertices () const { return static_cast<std::uint32_t> (size (0)); }
+
+  /** \brief The k+1 vertex ids of simplex \a s of dimension \a k. */
+  const std::uint32_t* vertices (int k, SimplexId s) const { return &vertices_[k][(k + 1) * std::size_t (s)]; }
+  std::uint32_t vertex (int k, SimplexId s, int i) const { return vertices (k, s)[i]; }
+
+  /** \brief The face of simplex (k, s) spanned by the local vertices in \a mask (non-empty). */
+  Simplex face (int k, SimplexId s, unsigned mask) const;
+
+private:
+  int dimension_ = -1;
+  std::array<std::vector<std::uint32_t>, 4> vertices_;
+  std::vector<SimplexId> tet_triangles_;      // 4 per tetrahedron, opposite local vertex i
+  std::vector<SimplexId> tet_edges_;          // 6 per tetrahedron, see EDGE_SLOT
+  std::vector<SimplexId> triangle_edges_;     // 3 per triangle, opposite local vertex i
+};
+
+/** \brief Number of local vertices in a mask. */
+inline int
+maskSize (unsigned mask)
+{
+  return __builtin_popcount (mask);
+}
+
+/** \brief The mask of all k+1 local vertices of a k-simplex. */
+inline unsigned
+fullMask (int k)
+{
+  return (1u << (k + 1)) - 1u;
+}
+
+} // namespace pcl_wrap::detail
