@@ -197,6 +197,39 @@ pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path)
   return points;
 }
 
+/** PCL's PCD reader trusts the header and reads past the data of a malformed file: check the
+  * layout the header declares against the file before handing it over. */
+void
+checkPcdLayout (const std::string& path)
+{
+  pcl::PCLPointCloud2 header;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  int version = 0, data_type = 0;
+  unsigned int data_index = 0;
+  if (pcl::PCDReader ().readHeader (path, header, origin, orientation, version, data_type, data_index) < 0 ||
+      header.fields.empty () || header.point_step == 0)
+    fail (path, "malformed PCD file: bad header");
+  std::ifstream in (path, std::ios::binary | std::ios::ate);
+  const std::uint64_t size = static_cast<std::uint64_t> (in.tellg ());
+  const std::uint64_t points = std::uint64_t (header.width) * header.height;
+  for (const auto& field : header.fields)
+    if (field.offset >= header.point_step)
+      fail (path, "malformed PCD file: field " + field.name + " beyond the point size");
+  if (data_index > size)
+    fail (path, "malformed PCD file: no data");
+  if (data_type == 1 && points * header.point_step > size - data_index)
+    fail (path, "malformed PCD file: binary data shorter than " + std::to_string (points) + " points");
+  if (data_type == 2)
+  {
+    std::uint32_t sizes[2] = {0, 0}; // compressed, uncompressed
+    in.seekg (data_index);
+    if (!in.read (reinterpret_cast<char*> (sizes), sizeof (sizes)) || sizes[0] > size - data_index - 8 ||
+        std::uint64_t (sizes[1]) != points * header.point_step)
+      fail (path, "malformed PCD file: compressed data does not match its header");
+  }
+}
+
 std::vector<Point3>
 readWithPcl (const std::string& path, bool pcd)
 {
@@ -209,7 +242,14 @@ readWithPcl (const std::string& path, bool pcd)
   int status = -1;
   try
   {
+    if (pcd)
+      checkPcdLayout (path);
     status = pcd ? pcl::io::loadPCDFile (path, cloud) : pcl::io::loadPLYFile (path, cloud);
+  }
+  catch (const FileError&)
+  {
+    pcl::console::setVerbosityLevel (verbosity);
+    throw;
   }
   catch (const std::exception& e)
   {

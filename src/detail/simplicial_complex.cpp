@@ -86,7 +86,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
                                       std::vector<std::uint32_t> top)
   : dimension_ (dimension)
 {
-  if (dimension < -1 || dimension > 3 || top.size () % (dimension + 1) != 0)
+  if (dimension < -1 || dimension > 3 || (dimension >= 0 && top.size () % (dimension + 1) != 0))
     throw std::invalid_argument ("SimplicialComplex: bad dimension or top simplex list");
   if (dimension == -1)
     return;

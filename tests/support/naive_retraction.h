@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+// The reference retraction of ALGORITHM.md §5.4: after every collapse it rescans every simplex
+// for a collapsible pair and picks one at random. Quadratic; for small inputs only.
+#include <pcl_wrap/wrap_result.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::test
+{
+
+struct NaiveSimplex
+{
+  std::vector<std::uint32_t> vertices;         // sorted
+  SimplexClass cls;
+  std::vector<std::uint32_t> lowest_successor; // sorted; confident simplices only
+};
+
+/** X: the simplices left when no pair is collapsible, sorted. */
+std::vector<std::vector<std::uint32_t>>
+naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed);
+
+} // namespace pcl_wrap::test

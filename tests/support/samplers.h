@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+// Seeded point samples for the tests: the same seed gives the same points everywhere.
+#include <pcl_wrap/compute_wrap.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace pcl_wrap::test
+{
+
+inline std::vector<Point3>
+cubeSample (std::size_t n, unsigned seed)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+    q = {u (random), u (random), u (random)};
+  return p;
+}
+
+/** Uniform on the unit sphere, each point moved radially by up to \a noise. */
+inline std::vector<Point3>
+sphereSample (std::size_t n, unsigned seed, double noise = 1e-3)
+{
+  std::mt19937_64 random (seed);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u (-noise, noise);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+  {
+    double x = g (random), y = g (random), z = g (random);
+    const double r = (1.0 + u (random)) / std::sqrt (x * x + y * y + z * z);
+    q = {x * r, y * r, z * r};
+  }
+  return p;
+}
+
+/** Uniform in angle on a torus with radii \a major > \a minor around the z-axis. */
+inline std::vector<Point3>
+torusSample (std::size_t n, unsigned seed, double major = 1.0, double minor = 0.4)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> angle (0.0, 2.0 * M_PI);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+  {
+    const double a = angle (random), b = angle (random);
+    q = {(major + minor * std::cos (b)) * std::cos (a), (major + minor * std::cos (b)) * std::sin (a), minor * std::sin (b)};
+  }
+  return p;
+}
+
+/** Points (t, t^2, t^3) for sorted random t in [0, 1]: point i is the i-th along the curve. */
+inline std::vector<Point3>
+momentCurveSample (std::size_t n, unsigned seed)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  std::vector<double> t (n);
+  for (auto& s : t)
+    s = u (random);
+  std::sort (t.begin (), t.end ());
+  std::vector<Point3> p (n);
+  for (std::size_t i = 0; i < n; ++i)
+    p[i] = {t[i], t[i] * t[i], t[i] * t[i] * t[i]};
+  return p;
+}
+
+} // namespace pcl_wrap::test

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The pcl_wrap command-line tool, run as a user runs it: every input and output format, the
+// JSON files, and one clear error line with no output for every malformed input.
+#include "support/samplers.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <pcl/PolygonMesh.h>
+#include <pcl/io/obj_io.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/io/vtk_lib_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+const std::string DIR = ::testing::TempDir () + "pcl_wrap_cli/";
+
+struct CliRun
+{
+  int status;
+  std::string err;
+};
+
+CliRun
+runCli (const std::string& arguments)
+{
+  // ctest runs the tests of this file in parallel processes: one stderr file per test.
+  const std::string err_file = DIR + ::testing::UnitTest::GetInstance ()->current_test_info ()->name () + ".err";
+  const int raw = std::system ((std::string (PCL_WRAP_CLI) + " " + arguments + " > /dev/null 2> " + err_file).c_str ());
+  std::ifstream in (err_file);
+  std::stringstream err;
+  err << in.rdbuf ();
+  return {WIFEXITED (raw) ? WEXITSTATUS (raw) : -1, err.str ()};
+}
+
+bool
+exists (const std::string& path)
+{
+  struct stat s;
+  return ::stat (path.c_str (), &s) == 0;
+}
+
+void
+writeText (const std::string& path, const std::string& text)
+{
+  std::ofstream (path) << text;
+}
+
+class Cli : public ::testing::Test
+{
+protected:
+  static void SetUpTestSuite ()
+  {
+    ASSERT_EQ (std::system (("mkdir -p " + DIR).c_str ()), 0);
+  }
+};
+
+TEST_F (Cli, EveryInputFormatGivesTheSameSurfaceInEveryOutputFormat)
+{
+  // Float coordinates, so that PCD and PLY (float fields) hold exactly the same points.
+  std::vector<Point3> points;
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const auto& p : sphereSample (500, 4, 1e-3))
+  {
+    cloud.push_back (pcl::PointXYZ (float (p[0]), float (p[1]), float (p[2])));
+    points.push_back ({double (float (p[0])), double (float (p[1])), double (float (p[2]))});
+  }
+  const std::size_t triangles = computeWrap (points).surface.triangles.size ();
+
+  std::ostringstream xyz, off, obj;
+  xyz.precision (17), off.precision (17), obj.precision (17);
+  xyz << "# a comment\n\n";
+  off << "OFF\n" << points.size () << " 0 0\n";
+  for (const auto& p : points)
+  {
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    obj << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  }
+  writeText (DIR + "in.xyz", xyz.str ());
+  writeText (DIR + "in.off", off.str ());
+  writeText (DIR + "in.obj", obj.str () + "f 1 2 3\n");
+  ASSERT_EQ (pcl::io::savePCDFileBinary (DIR + "in.pcd", cloud), 0);
+  ASSERT_EQ (pcl::io::savePLYFileBinary (DIR + "in.ply", cloud), 0);
+
+  for (const std::string input : {"in.xyz", "in.off", "in.obj", "in.pcd", "in.ply"})
+    for (const std::string output : {"out.ply", "out.obj", "out.vtk"})
+    {
+      SCOPED_TRACE (input + " -> " + output);
+      std::remove ((DIR + output).c_str ());
+      const CliRun run = runCli (DIR + input + " " + DIR + output + " --quiet");
+      ASSERT_EQ (run.status, 0) << run.err;
+      pcl::PolygonMesh mesh;
+      if (output == "out.ply")
+        ASSERT_GE (pcl::io::loadPLYFile (DIR + output, mesh), 0);
+      else if (output == "out.obj")
+        ASSERT_GE (pcl::io::loadOBJFile (DIR + output, mesh), 0);
+      else
+        ASSERT_GT (pcl::io::loadPolygonFileVTK (DIR + output, mesh), 0);
+      EXPECT_EQ (mesh.polygons.size (), triangles);
+      EXPECT_EQ (std::size_t (mesh.cloud.width) * mesh.cloud.height, points.size ());
+    }
+}
+
+TEST_F (Cli, WritesComplexAndStatisticsJson)
+{
+  const auto points = torusSample (300, 2);
+  std::ostringstream xyz;
+  xyz.precision (17);
+  for (const auto& p : points)
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  xyz << "nan 0 0\n"; // a data line: index 300, skipped
+  writeText (DIR + "torus.xyz", xyz.str ());
+  const CliRun run = runCli (DIR + "torus.xyz " + DIR + "torus.ply --complex " + DIR + "torus.json --stats-json " +
+                          DIR + "torus_stats.json --stats");
+  ASSERT_EQ (run.status, 0) << run.err;
+  // Checked with Python's JSON parser: valid, the promised keys, sorted simplices, sane counts.
+  const std::string check = R"PY(
+import json, sys
+c = json.load(open(sys.argv[1])); s = json.load(open(sys.argv[2]))
+assert c["n"] == 301 and c["skipped"] == [300] and c["hidden"] == []
+for k in "0123":
+    assert all(x == sorted(x) and len(x) == int(k) + 1 for x in c["X"][k]) and c["X"][k] == sorted(c["X"][k])
+assert len(c["X"]["0"]) == 300 and len(c["W"]["triangles"]) == s["w"]["triangles"] > 0
+assert sum(c["class_counts"]["3"].values()) == s["simplices"]["3"]["centered"] + s["simplices"]["3"]["confident"] + s["simplices"]["3"]["equivocal"]
+chi = sum((-1) ** int(k) * len(c["X"][k]) for k in "0123")
+assert chi == 1, chi
+t = s["timings"]; assert abs(sum(v for k, v in t.items() if k != "total") - t["total"]) < 1e-6
+assert set(t) >= {"triangulation", "classification", "collapse", "total"}
+)PY";
+  writeText (DIR + "check.py", check);
+  EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()), 0);
+}
+
+TEST_F (Cli, MalformedInputGivesOneErrorLineAndNoOutput)
+{
+  writeText (DIR + "empty.xyz", "");
+  writeText (DIR + "comments.xyz", "# nothing\n\n");
+  writeText (DIR + "garbage.xyz", "1 2 3\n4 five 6\n");
+  writeText (DIR + "columns.xyz", "1 2 3\n4 5 6 7\n");
+  writeText (DIR + "truncated.off", "OFF\n10 0 0\n1 2 3\n4 5 6\n");
+  writeText (DIR + "noheader.off", "3 0 0\n1 2 3\n");
+  writeText (DIR + "novertex.obj", "f 1 2 3\n");
+  writeText (DIR + "badvertex.obj", "v 1 2\n");
+  writeText (DIR + "truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\n"
+                                    "property float y\nproperty float z\nend_header\n\x01\x02");
+  writeText (DIR + "junk.pcd", std::string ("\x7f\x45garbage\x00\x01 more", 16));
+  writeText (DIR + "points.las", "1 2 3\n");
+  for (const std::string input : {"empty.xyz", "comments.xyz", "garbage.xyz", "columns.xyz", "truncated.off",
+                                  "noheader.off", "novertex.obj", "badvertex.obj", "truncated.ply", "junk.pcd",
+                                  "points.las", "missing.xyz"})
+  {
+    SCOPED_TRACE (input);
+    std::remove ((DIR + "never.ply").c_str ());
+    const CliRun run = runCli (DIR + input + " " + DIR + "never.ply");
+    EXPECT_NE (run.status, 0);
+    EXPECT_FALSE (exists (DIR + "never.ply"));
+    EXPECT_EQ (std::count (run.err.begin (), run.err.end (), '\n'), 1) << run.err;
+    EXPECT_NE (run.err.find (input), std::string::npos) << "the error names the file: " << run.err;
+  }
+}
+
+TEST_F (Cli, UsageErrors)
+{
+  // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.
+  writeText (DIR + "ok.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
+  EXPECT_EQ (runCli (DIR + "ok.xyz").status, 2);
+  EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.stl").status, 2);
+  EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --bogus").status, 2);
+  EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --threads x").status, 2);
+  EXPECT_EQ (runCli ("--help").status, 0);
+  const CliRun ok = runCli (DIR + "ok.xyz " + DIR + "tet.obj --threads 1");
+  EXPECT_EQ (ok.status, 0) << ok.err;
+  std::ifstream tet (DIR + "tet.obj");
+  int faces = 0;
+  for (std::string line; std::getline (tet, line);)
+    faces += line.rfind ("f ", 0) == 0;
+  EXPECT_EQ (faces, 4);
+}
+
+} // namespace
+} // namespace pcl_wrap::test

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// pcl_wrap::Wrap as a PCL stage: NaNs and setIndices in, a PolygonMesh indexing the input cloud
+// out, through PCL's PLY writer and reader.
+#include "support/samplers.h"
+#include "support/topology.h"
+
+#include <pcl_wrap/wrap.h>
+
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+TEST (PclWrap, CloudWithNansAndIndicesToPolygonMeshAndBackThroughPly)
+{
+  // A sphere (every other point selected), with NaNs among the selected and unselected points.
+  const auto sample = sphereSample (1200, 9, 1e-3);
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  for (const auto& p : sample)
+    cloud->push_back (pcl::PointXYZ (float (p[0]), float (p[1]), float (p[2])));
+  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  for (std::size_t i : {4u, 6u, 7u, 100u})
+    (*cloud)[i].x = nan;
+  cloud->is_dense = false;
+  auto indices = pcl::make_shared<pcl::Indices> ();
+  for (int i = 0; i < int (cloud->size ()); i += 2)
+    indices->push_back (i);
+
+  Wrap<pcl::PointXYZ> wrap;
+  wrap.setInputCloud (cloud);
+  wrap.setIndices (indices);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+
+  // PCL's convention: the output cloud is the whole input; polygons index it.
+  EXPECT_EQ (std::size_t (mesh.cloud.width) * mesh.cloud.height, cloud->size ());
+  const WrapStatistics& stats = wrap.getStatistics ();
+  EXPECT_EQ (stats.points_input, indices->size ());
+  EXPECT_EQ (stats.points_skipped, 3u); // 4, 6 and 100 are selected; 7 is not
+  EXPECT_EQ (wrap.getResult ().skipped, (std::vector<PointIndex>{4, 6, 100}));
+  ASSERT_FALSE (mesh.polygons.empty ());
+  EXPECT_EQ (mesh.polygons.size (), stats.w_triangles);
+  std::set<pcl::index_t> selected (indices->begin (), indices->end ());
+  std::set<std::uint32_t> used;
+  std::vector<Triangle> triangles;
+  for (const auto& polygon : mesh.polygons)
+  {
+    ASSERT_EQ (polygon.vertices.size (), 3u);
+    for (auto v : polygon.vertices)
+    {
+      ASSERT_TRUE (selected.count (v)) << "polygon uses an unselected point";
+      ASSERT_TRUE (std::isfinite ((*cloud)[v].x)) << "polygon uses a NaN point";
+      used.insert (v);
+    }
+    triangles.push_back ({polygon.vertices[0], polygon.vertices[1], polygon.vertices[2]});
+  }
+  EXPECT_EQ (used.size (), indices->size () - 3); // a sphere: every finite selected point on W
+  EXPECT_TRUE (describeSurface (triangles).closed_manifold);
+
+  // The timings include the mesh stage and add up to the total.
+  double sum = 0.0;
+  for (const auto& t : stats.timings)
+    sum += t.seconds;
+  EXPECT_EQ (stats.timings.back ().stage, "mesh");
+  EXPECT_NEAR (sum, stats.total_seconds, 1e-9);
+
+  // Through PCL's PLY writer and reader.
+  const std::string path = ::testing::TempDir () + "pcl_wrap_mesh.ply";
+  ASSERT_EQ (pcl::io::savePLYFile (path, mesh), 0);
+  pcl::PolygonMesh back;
+  ASSERT_GE (pcl::io::loadPLYFile (path, back), 0);
+  std::remove (path.c_str ());
+  ASSERT_EQ (back.polygons.size (), mesh.polygons.size ());
+  for (std::size_t i = 0; i < mesh.polygons.size (); ++i)
+    EXPECT_EQ (back.polygons[i].vertices, mesh.polygons[i].vertices);
+  EXPECT_EQ (std::size_t (back.cloud.width) * back.cloud.height, cloud->size ());
+}
+
+TEST (PclWrap, PointsAndPolygonsOverloadAndOtherPointTypes)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> ();
+  for (const auto& p : sphereSample (300, 2, 1e-3))
+  {
+    pcl::PointXYZRGB q;
+    q.x = float (p[0]), q.y = float (p[1]), q.z = float (p[2]);
+    cloud->push_back (q);
+  }
+  Wrap<pcl::PointXYZRGB> wrap;
+  wrap.setInputCloud (cloud);
+  pcl::PointCloud<pcl::PointXYZRGB> points;
+  std::vector<pcl::Vertices> polygons;
+  wrap.reconstruct (points, polygons);
+  EXPECT_EQ (points.size (), cloud->size ());
+  EXPECT_EQ (polygons.size (), wrap.getStatistics ().w_triangles);
+  EXPECT_EQ (polygons.size (), 2 * cloud->size () - 4); // closed genus-0 triangulation
+}
+
+TEST (PclWrap, EmptyCloudGivesEmptyMesh)
+{
+  Wrap<pcl::PointXYZ> wrap;
+  wrap.setInputCloud (pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ());
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  EXPECT_TRUE (mesh.polygons.empty ());
+}
+
+} // namespace
+} // namespace pcl_wrap::test
