@@ -8,13 +8,13 @@
 #include "support/pipeline.h"
 #include "support/samplers.h"
 #include "support/topology.h"
+#include "support/wrap_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <gtest/gtest.h>
 
 #include <map>
-#include <set>
 #include <string>
 
 namespace pcl_wrap::test
@@ -73,101 +73,6 @@ TEST (Retraction, IndependentOfTheOrderOfCollapses)
   }
 }
 
-/** X from the result's complex, as sorted tuples. */
-std::vector<Tuple>
-tuplesOfX (const WrapResult& r)
-{
-  std::vector<Tuple> x;
-  for (int k = 0; k <= 3; ++k)
-  {
-    const auto flat = r.xSimplices (k);
-    for (std::size_t s = 0; s < flat.size (); s += k + 1)
-    {
-      Tuple t (flat.begin () + s, flat.begin () + s + k + 1);
-      std::sort (t.begin (), t.end ());
-      x.push_back (t);
-    }
-  }
-  std::sort (x.begin (), x.end ());
-  return x;
-}
-
-/** Bd X by the paper's definition (§2): X minus the simplices whose link in X is a sphere. For a
-  * subcomplex of Del S in R^3 that is the simplices not on the hull whose whole star in Del S is
-  * in X. */
-std::set<Tuple>
-boundaryByLinks (const WrapResult& r)
-{
-  std::map<Tuple, bool> in_x;          // every Del simplex
-  std::map<Tuple, std::vector<Tuple>> cofaces;
-  std::map<Tuple, int> tets_of_triangle;
-  for (int k = 0; k <= 3; ++k)
-    for (std::size_t s = 0; s < r.complex[k].size (); ++s)
-    {
-      Tuple t (r.complex[k].vertices.begin () + (k + 1) * s, r.complex[k].vertices.begin () + (k + 1) * (s + 1));
-      std::sort (t.begin (), t.end ());
-      in_x[t] = r.complex[k].in_x[s];
-      for (unsigned mask = 1; mask + 1 < (1u << t.size ()); ++mask)
-      {
-        Tuple f;
-        for (std::size_t i = 0; i < t.size (); ++i)
-          if (mask & (1u << i))
-            f.push_back (t[i]);
-        cofaces[f].push_back (t);
-        tets_of_triangle[f] += k == 3 && f.size () == 3;
-      }
-    }
-  std::set<Tuple> hull;
-  const bool full_dimensional = !r.complex[3].vertices.empty ();
-  for (const auto& [t, n] : tets_of_triangle)
-    if (t.size () == 3 && n == 1)
-      for (unsigned mask = 1; mask < 8; ++mask)
-      {
-        Tuple f;
-        for (int i = 0; i < 3; ++i)
-          if (mask & (1u << i))
-            f.push_back (t[i]);
-        hull.insert (f);
-      }
-  std::set<Tuple> boundary;
-  for (const auto& [t, x] : in_x)
-  {
-    if (!x)
-      continue;
-    const auto& star = cofaces[t];
-    const bool interior = full_dimensional && !hull.count (t) &&
-                          std::all_of (star.begin (), star.end (), [&] (const Tuple& c) { return in_x.at (c); });
-    if (!interior)
-      boundary.insert (t);
-  }
-  return boundary;
-}
-
-/** W's simplices with all their faces. */
-std::set<Tuple>
-closureOfW (const WrapSurface& w)
-{
-  std::set<Tuple> out;
-  const auto add = [&] (Tuple t) {
-    std::sort (t.begin (), t.end ());
-    for (unsigned mask = 1; mask < (1u << t.size ()); ++mask)
-    {
-      Tuple f;
-      for (std::size_t i = 0; i < t.size (); ++i)
-        if (mask & (1u << i))
-          f.push_back (t[i]);
-      out.insert (f);
-    }
-  };
-  for (const auto& t : w.triangles)
-    add ({t[0], t[1], t[2]});
-  for (const auto& e : w.dangling_edges)
-    add ({e[0], e[1]});
-  for (auto v : w.isolated_vertices)
-    add ({v});
-  return out;
-}
-
 /** Every W triangle with a tetrahedron of X behind it has that tetrahedron on its negative side. */
 void
 expectOrientedAwayFromX (const std::vector<Point3>& points, const WrapResult& r)
@@ -208,13 +113,7 @@ TEST (Retraction, XIsContractibleAndWIsItsBoundary)
       {
         SCOPED_TRACE ("n " + std::to_string (n) + " seed " + std::to_string (seed));
         const WrapResult r = computeWrap (points);
-        const auto x = tuplesOfX (r);
-        ASSERT_TRUE (closedUnderFaces (x));
-        const Homology h = homology (x);
-        EXPECT_EQ (h.components, 1u);
-        EXPECT_EQ (h.euler, 1);
-        EXPECT_EQ (h.betti1, 0u);
-        EXPECT_EQ (closureOfW (r.surface), boundaryByLinks (r));
+        expectWrapInvariants (r);
         for (const auto& t : r.surface.triangles)
           for (PointIndex v : t)
             ASSERT_LT (v, points.size ());

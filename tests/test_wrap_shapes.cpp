@@ -5,6 +5,7 @@
 // and on inputs whose triangulation has dimension 3, 2, 1, 0 or none.
 #include "support/samplers.h"
 #include "support/topology.h"
+#include "support/wrap_checks.h"
 
 #include <pcl_wrap/compute_wrap.h>
 
@@ -95,37 +96,12 @@ TEST (WrapShapes, TorusIsClosedAndSealedWithPinchEdges)
     EXPECT_TRUE (r.surface.dangling_edges.empty ());
     EXPECT_TRUE (r.surface.isolated_vertices.empty ());
 
-    const auto tets = r.xSimplices (3);
-    std::set<Tuple> tet_faces;
-    for (std::size_t s = 0; s < tets.size (); s += 4)
-      for (int i = 0; i < 4; ++i)
-      {
-        Tuple f;
-        for (int j = 0; j < 4; ++j)
-          if (j != i)
-            f.push_back (tets[s + j]);
-        std::sort (f.begin (), f.end ());
-        tet_faces.insert (f);
-      }
-    std::map<std::pair<PointIndex, PointIndex>, int> sides;
-    for (const auto& t : r.surface.triangles)
-    {
-      Tuple key (t.begin (), t.end ());
-      std::sort (key.begin (), key.end ());
-      const int n = tet_faces.count (key) ? 1 : 2;
-      for (int i = 0; i < 3; ++i)
-        sides[std::minmax (t[i], t[(i + 1) % 3])] += n;
-    }
-    bool pinch = false;
-    for (const auto& [edge, count] : sides)
-    {
-      EXPECT_EQ (count % 2, 0) << "W is open at edge " << edge.first << "-" << edge.second;
-      pinch |= count >= 4;
-    }
-    pinched += pinch;
+    EXPECT_EQ (openEdgeOfW (r), "") << "W is open there";
+    pinched += pinchEdges (r) > 0;
 
     // Sealed: X (a tetrahedron, or a sheet of zero thickness) spans the tunnel: it meets the
     // tunnel's axis within the torus's height.
+    const auto tets = r.xSimplices (3);
     const auto pointOf = [&] (PointIndex i) { return K::Point_3 (points[i][0], points[i][1], points[i][2]); };
     const K::Segment_3 axis (K::Point_3 (0, 0, -0.4), K::Point_3 (0, 0, 0.4));
     bool covered = false;

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Installs, from Debian's archive, every package that pcl_wrap's build, tests and demo need.
+# Idempotent and non-interactive: does nothing when everything is already installed.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ccache pkg-config python3
+  libpcl-dev libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libeigen3-dev libboost-dev
+  libgtest-dev mpi-default-dev
+  libcgal-demo   # sample data: the Stanford bunny, kitten, fandisk
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq "${missing[@]}" > /dev/null

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+// Checks of a WrapResult against the definitions of X and W, shared by the tests.
+#include "topology.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace pcl_wrap::test
+{
+
+/** X, from the result's complex, as sorted tuples. */
+std::vector<Tuple>
+tuplesOfX (const WrapResult& r);
+
+/** Bd X by the paper's definition (§2): X minus the simplices whose link in X is a sphere. */
+std::set<Tuple>
+boundaryByLinks (const WrapResult& r);
+
+/** W's triangles, dangling edges and isolated vertices with all their faces. */
+std::set<Tuple>
+closureOfW (const WrapSurface& w);
+
+/** Empty when W is closed: every edge of W's triangles bounds the outside on an even number of
+  * sides, a sheet triangle (no tetrahedron of X behind it) counting on both its sides. Otherwise
+  * names an open edge. */
+std::string
+openEdgeOfW (const WrapResult& r);
+
+/** The edges of W's triangles on more than two sides: where W touches itself. */
+std::size_t
+pinchEdges (const WrapResult& r);
+
+/** Asserts (gtest) X contractible, W = Bd X and W closed. */
+void
+expectWrapInvariants (const WrapResult& r);
+
+} // namespace pcl_wrap::test
