@@ -5,7 +5,13 @@
 #include "cgal_kernel.h"
 
 #include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/Hilbert_sort_3.h>
+#include <CGAL/Hilbert_policy_tags.h>
+#include <CGAL/property_map.h>
+
+#include <numeric>
 
 #include <utility>
 
@@ -41,21 +47,33 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   Triangulation t;
   t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
 
-  // Vertex ids in input order, so that the numbering does not depend on CGAL's.
+  // Vertex ids along a Hilbert curve: neighbours in space are neighbours in every array
+  // indexed by vertex (and so by edge and triangle), which keeps the later stages in cache.
+  // The numbering depends only on the points, never on CGAL's internals.
+  std::vector<BarePoint> bare;
+  bare.reserve (positions.size ());
+  for (const Point3& p : positions)
+    bare.emplace_back (p[0], p[1], p[2]);
+  std::vector<std::uint32_t> curve (positions.size ());
+  std::iota (curve.begin (), curve.end (), 0u);
+  using ByIndex = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<BarePoint>::type>;
+  CGAL::Hilbert_sort_3<ByIndex, CGAL::Hilbert_sort_median_policy> (ByIndex (CGAL::make_property_map (bare.data ()))) (
+      curve.begin (), curve.end ());
+  bare = {};
+
   constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
   std::vector<std::uint32_t> vertex_of_point (positions.size (), ABSENT);
   for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
     vertex_of_point[v->info ()] = 0;
-  for (std::uint32_t i = 0; i < positions.size (); ++i)
-  {
-    if (vertex_of_point[i] == ABSENT)
-      t.hidden.push_back (i);
-    else
+  for (std::uint32_t i : curve)
+    if (vertex_of_point[i] != ABSENT)
     {
       vertex_of_point[i] = static_cast<std::uint32_t> (t.point_of_vertex.size ());
       t.point_of_vertex.push_back (i);
     }
-  }
+  for (std::uint32_t i = 0; i < positions.size (); ++i)
+    if (vertex_of_point[i] == ABSENT)
+      t.hidden.push_back (i);
   const auto id = [&] (Regular::Vertex_handle v) { return vertex_of_point[v->info ()]; };
 
   auto& top = t.top_simplices;

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// bench_wrap SHAPE N [SEED]: on the same N points (SHAPE: sphere, cube or torus, or a point
+// file), times and measures the peak memory of CGAL's triangulations alone (the floor any
+// Delaunay-based method pays) and of pcl_wrap, stage by stage. Each measurement runs in a
+// child process of its own, so each peak resident set size is its own.
+#include "point_file.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Regular_triangulation_3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace
+{
+
+using pcl_wrap::Point3;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+std::vector<Point3>
+makePoints (const std::string& shape, std::size_t n, unsigned seed)
+{
+  if (shape != "sphere" && shape != "cube" && shape != "torus")
+    return pcl_wrap::apps::readPoints (shape);
+  std::mt19937_64 random (seed);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u (-1.0, 1.0), angle (0.0, 2.0 * M_PI);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+    if (shape == "cube")
+      q = {u (random), u (random), u (random)};
+    else if (shape == "torus")
+    {
+      const double a = angle (random), b = angle (random);
+      q = {(1.0 + 0.4 * std::cos (b)) * std::cos (a), (1.0 + 0.4 * std::cos (b)) * std::sin (a), 0.4 * std::sin (b)};
+    }
+    else
+    {
+      const double x = g (random), y = g (random), z = g (random);
+      const double r = (1.0 + 1e-3 * u (random)) / std::sqrt (x * x + y * y + z * z);
+      q = {x * r, y * r, z * r};
+    }
+  return p;
+}
+
+struct Measurement
+{
+  double seconds = 0.0;
+  long peak_kib = 0;
+  char detail[512] = "";
+};
+
+/** Runs \a work in a child process; returns its wall time and peak resident set size. */
+Measurement
+measure (const std::function<void (Measurement&)>& work)
+{
+  int channel[2];
+  if (::pipe (channel) != 0)
+    throw std::runtime_error ("pipe failed");
+  const pid_t child = ::fork ();
+  if (child == 0)
+  {
+    ::close (channel[0]);
+    Measurement m;
+    const auto start = std::chrono::steady_clock::now ();
+    work (m);
+    m.seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+    rusage usage{};
+    ::getrusage (RUSAGE_SELF, &usage);
+    m.peak_kib = usage.ru_maxrss;
+    const bool sent = ::write (channel[1], &m, sizeof (m)) == ssize_t (sizeof (m));
+    ::_exit (sent ? 0 : 1);
+  }
+  ::close (channel[1]);
+  Measurement m;
+  const bool received = ::read (channel[0], &m, sizeof (m)) == ssize_t (sizeof (m));
+  ::close (channel[0]);
+  int status = 0;
+  ::waitpid (child, &status, 0);
+  if (!received || !WIFEXITED (status) || WEXITSTATUS (status) != 0)
+    throw std::runtime_error ("a measurement failed");
+  return m;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  if (argc < 3)
+  {
+    std::cerr << "usage: bench_wrap sphere|cube|torus|FILE N [SEED]\n";
+    return 2;
+  }
+  const std::string shape = argv[1];
+  const std::size_t n = std::stoul (argv[2]);
+  const unsigned seed = argc > 3 ? unsigned (std::stoul (argv[3])) : 1u;
+  const std::vector<Point3> points = makePoints (shape, n, seed);
+  // What the process holds before any measurement (the points, the program): subtracted from
+  // nothing, shown so the peaks can be read against it.
+  const Measurement baseline = measure ([] (Measurement&) {});
+
+  const Measurement delaunay = measure ([&] (Measurement& m) {
+    std::vector<K::Point_3> p;
+    p.reserve (points.size ());
+    for (const auto& q : points)
+      p.emplace_back (q[0], q[1], q[2]);
+    CGAL::Delaunay_triangulation_3<K> dt (p.begin (), p.end ());
+    std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
+  });
+  const Measurement regular = measure ([&] (Measurement& m) {
+    std::vector<K::Weighted_point_3> p;
+    p.reserve (points.size ());
+    for (const auto& q : points)
+      p.emplace_back (K::Point_3 (q[0], q[1], q[2]), 0.0);
+    CGAL::Regular_triangulation_3<K> rt (p.begin (), p.end ());
+    std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (rt.number_of_finite_cells ()));
+  });
+  const Measurement wrap = measure ([&] (Measurement& m) {
+    pcl_wrap::WrapParameters parameters;
+    parameters.keep_complex = false;
+    const pcl_wrap::WrapResult r = pcl_wrap::computeWrap (points, parameters);
+    std::string stages;
+    for (const auto& t : r.statistics.timings)
+      stages += t.stage + "=" + std::to_string (t.seconds) + " ";
+    std::snprintf (m.detail, sizeof (m.detail), "%zu W triangles; %s", r.statistics.w_triangles, stages.c_str ());
+  });
+
+  std::printf ("%s n=%zu seed=%u (baseline peak %.1f MiB)\n", shape.c_str (), points.size (), seed, baseline.peak_kib / 1024.0);
+  std::printf ("  %-28s %9s %11s  %s\n", "", "seconds", "peak MiB", "");
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Delaunay_triangulation_3", delaunay.seconds, delaunay.peak_kib / 1024.0, delaunay.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Regular_triangulation_3", regular.seconds, regular.peak_kib / 1024.0, regular.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
+  std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
+               double (wrap.peak_kib) / double (regular.peak_kib));
+  return 0;
+}
