@@ -17,6 +17,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace pcl_wrap
@@ -109,7 +110,8 @@ computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters
   for (const auto& t : w.triangles)
     surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
   for (const auto& e : w.dangling_edges)
-    surface.dangling_edges.push_back ({input_of_vertex[e[0]], input_of_vertex[e[1]]});
+    surface.dangling_edges.push_back ({std::min (input_of_vertex[e[0]], input_of_vertex[e[1]]),
+                                       std::max (input_of_vertex[e[0]], input_of_vertex[e[1]])});
   for (std::uint32_t v : w.isolated_vertices)
     surface.isolated_vertices.push_back (input_of_vertex[v]);
   stats.w_triangles = surface.triangles.size ();

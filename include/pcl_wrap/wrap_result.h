@@ -46,7 +46,7 @@ struct WrapSurface
   /** \brief Triangles of X with fewer than two tetrahedra of X behind them, oriented with their
     * normal pointing away from the tetrahedron behind them (sheets: consistently per sheet). */
   std::vector<std::array<PointIndex, 3>> triangles;
-  /** \brief Edges of X with no triangle of X on them. */
+  /** \brief Edges of X with no triangle of X on them, each with its smaller index first. */
   std::vector<std::array<PointIndex, 2>> dangling_edges;
   /** \brief Vertices of X with no edge of X on them. */
   std::vector<PointIndex> isolated_vertices;
