@@ -69,6 +69,8 @@ protected:
 private:
   /** Runs the construction on input_ / indices_ and fills result_ with cloud indices. */
   void computeResult ();
+  /** computeResult(), or, if the engine fails, a PCL_ERROR and an empty result. */
+  bool computeResultOrReport ();
   /** The triangles of result_ as PCL polygons, timed as the "mesh" stage. */
   void appendPolygons (std::vector<pcl::Vertices>& polygons);
 

@@ -102,7 +102,7 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
     for (int i = 0; i < 4; ++i)
     {
       const Simplex f = complex.face (3, t, fullMask (3) & ~(1u << i));
-      if (x.cofacesInY (f, 3) == 1)
+      if (x.cofacesInY (f) == 1)
       {
         const std::uint32_t* v = complex.vertices (3, t);
         const int* o = OUTWARD_FACET[i];
@@ -112,18 +112,18 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
   }
   std::vector<SimplexId> sheet;
   for (SimplexId f = 0; f < complex.size (2); ++f)
-    if (x.inY ({2, f}) && (complex.dimension () < 3 || x.cofacesInY ({2, f}, 3) == 0))
+    if (x.inY ({2, f}) && x.cofacesInY ({2, f}) == 0)
       sheet.push_back (f);
   orientSheets (complex, sheet, w.triangles);
 
   for (SimplexId e = 0; e < complex.size (1); ++e)
-    if (x.inY ({1, e}) && (complex.dimension () < 2 || x.cofacesInY ({1, e}, 2) == 0))
+    if (x.inY ({1, e}) && x.cofacesInY ({1, e}) == 0)
     {
       const std::uint32_t* v = complex.vertices (1, e);
       w.dangling_edges.push_back ({v[0], v[1]});
     }
   for (SimplexId v = 0; v < complex.size (0); ++v)
-    if (x.inY ({0, v}) && (complex.dimension () < 1 || x.cofacesInY ({0, v}, 1) == 0))
+    if (x.inY ({0, v}) && x.cofacesInY ({0, v}) == 0)
       w.isolated_vertices.push_back (v);
   return w;
 }

@@ -6,28 +6,17 @@
 
 namespace pcl_wrap::detail
 {
-namespace
-{
-
-constexpr std::uint32_t BINOMIAL[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-
-} // namespace
-
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification)
   : complex_ (complex), classification_ (classification)
 {
   for (int k = 0; k <= 3; ++k)
-  {
     alive_[k].assign (complex.size (k), 1);
-    counts_[k].assign (stride (k) * complex.size (k), 0);
-  }
+  for (int k = 0; k < 3; ++k)
+    counts_[k].assign (complex.size (k), 0);
   for (int m = 1; m <= complex.dimension (); ++m)
     for (SimplexId s = 0; s < complex.size (m); ++s)
-      for (unsigned mask = 1; mask < fullMask (m); ++mask)
-      {
-        const Simplex f = complex.face (m, s, mask);
-        ++counts_[f.dim][stride (f.dim) * f.id + (m - f.dim - 1)];
-      }
+      for (int i = 0; i <= m; ++i)
+        ++counts_[m - 1][complex.face (m, s, fullMask (m) & ~(1u << i)).id];
 }
 
 bool
@@ -36,13 +25,11 @@ Retraction::collapsible (Simplex v) const
   const Simplex tau = classification_.predecessor[v.dim][v.id];
   if (tau.id == NO_SIMPLEX || !inY (v) || !inY (tau) || classification_.of (v) != SimplexClass::equivocal)
     return false;
-  // v is free with tau its largest coface iff its cofaces in Y are exactly the faces of tau
-  // containing it: C(k - l, m - l) of each dimension m up to k, none above.
-  const int l = v.dim, k = tau.dim;
-  for (int m = l + 1; m <= complex_.dimension (); ++m)
-    if (cofacesInY (v, m) != (m <= k ? BINOMIAL[k - l][m - l] : 0))
-      return false;
-  return true;
+  // v is free with tau its largest coface iff every coface of v in Y is a face of tau. The k - l
+  // faces of tau one dimension above v are in Y (Y is a complex, tau is in it), and any other
+  // coface xi of v has a vertex q outside tau, so v + q is one more coface one dimension up.
+  // Counting those suffices.
+  return cofacesInY (v) == static_cast<std::uint32_t> (tau.dim - v.dim);
 }
 
 void
@@ -50,16 +37,19 @@ Retraction::collapse (Simplex v, Simplex tau)
 {
   const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
   const unsigned full = fullMask (tau.dim);
-  // Remove every xi with v <= xi <= tau, and tell the faces of each that it is gone.
+  // Remove every xi with v <= xi <= tau, and tell the facets of each that it is gone.
   for (unsigned removed = low; removed <= full; removed = (removed + 1) | low)
   {
     const Simplex xi = complex_.face (tau.dim, tau.id, removed);
     alive_[xi.dim][xi.id] = 0;
-    for (unsigned sub = (removed - 1) & removed; sub != 0; sub = (sub - 1) & removed)
+    if (xi.dim == 0)
+      continue;
+    for (unsigned drop = removed; drop != 0; drop &= drop - 1)
     {
-      const Simplex f = complex_.face (tau.dim, tau.id, sub);
-      --counts_[f.dim][stride (f.dim) * f.id + (xi.dim - f.dim - 1)];
-      if ((sub & low) != low)
+      const unsigned facet = removed & ~(drop & -drop);
+      const Simplex f = complex_.face (tau.dim, tau.id, facet);
+      --counts_[f.dim][f.id];
+      if ((facet & low) != low)
         work_.push_back (f); // survives this collapse and may have become free
     }
   }

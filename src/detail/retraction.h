@@ -15,10 +15,10 @@ namespace pcl_wrap::detail
 /** \brief The subcomplex Y of Del S and the collapses that shrink it (ALGORITHM.md §5).
   *
   * Y starts as Del S with omega already deleted (omega is never counted as a coface). Every
-  * simplex keeps how many of its cofaces of each higher dimension are still in Y, so freeness
-  * is an O(1) test, and a work queue holds the only places where a new collapsible pair can
-  * appear: the remaining faces of what was just removed. A whole retraction is linear in the
-  * number of simplices.
+  * simplex keeps how many of its cofaces one dimension up are still in Y, which is all freeness
+  * needs (see collapsible()), and a work queue holds the only places where a new collapsible
+  * pair can appear: the remaining facets of what was just removed. A whole retraction is linear
+  * in the number of simplices.
   */
 class Retraction
 {
@@ -31,18 +31,17 @@ public:
   std::size_t retract (std::uint64_t order_seed = 0);
 
   bool inY (Simplex s) const { return alive_[s.dim][s.id] != 0; }
-  /** \brief Number of cofaces of dimension \a m (> s.dim) of \a s still in Y. */
-  std::uint32_t cofacesInY (Simplex s, int m) const { return counts_[s.dim][stride (s.dim) * s.id + (m - s.dim - 1)]; }
+  /** \brief Number of cofaces of \a s of dimension s.dim + 1 still in Y. */
+  std::uint32_t cofacesInY (Simplex s) const { return s.dim < 3 ? counts_[s.dim][s.id] : 0; }
 
 private:
-  static int stride (int k) { return 3 - k; }
   bool collapsible (Simplex v) const;
   void collapse (Simplex v, Simplex tau);
 
   const SimplicialComplex& complex_;
   const Classification& classification_;
   std::array<std::vector<std::uint8_t>, 4> alive_;
-  std::array<std::vector<std::uint32_t>, 4> counts_; // (3 - k) per k-simplex
+  std::array<std::vector<std::uint32_t>, 3> counts_; // per k-simplex: its (k+1)-cofaces in Y
   std::vector<Simplex> work_;
 };
 

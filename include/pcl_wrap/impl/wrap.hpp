@@ -4,9 +4,10 @@
 
 #include <pcl_wrap/wrap.h>
 
-#include <pcl/common/io.h>
+#include <pcl/console/print.h>
 
 #include <chrono>
+#include <exception>
 
 namespace pcl_wrap
 {
@@ -61,20 +62,36 @@ Wrap<PointInT>::appendPolygons (std::vector<pcl::Vertices>& polygons)
   result_.statistics.total_seconds += seconds;
 }
 
+template <typename PointInT> bool
+Wrap<PointInT>::computeResultOrReport ()
+{
+  try
+  {
+    computeResult ();
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    PCL_ERROR ("[pcl_wrap::%s::reconstruct] %s\n", getClassName ().c_str (), e.what ());
+    result_ = WrapResult ();
+    return false;
+  }
+}
+
 template <typename PointInT> void
 Wrap<PointInT>::performReconstruction (pcl::PolygonMesh& output)
 {
-  computeResult ();
-  appendPolygons (output.polygons);
+  if (computeResultOrReport ())
+    appendPolygons (output.polygons);
 }
 
 template <typename PointInT> void
 Wrap<PointInT>::performReconstruction (pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons)
 {
-  computeResult ();
   points = *input_;
   polygons.clear ();
-  appendPolygons (polygons);
+  if (computeResultOrReport ())
+    appendPolygons (polygons);
 }
 
 } // namespace pcl_wrap
