@@ -89,7 +89,8 @@ computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters
   clock.stageDone ("triangulation");
 
   const SimplicialComplex complex (triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
-                                   std::move (triangulation.top_simplices));
+                                   std::move (triangulation.top_simplices), triangulation.neighbours);
+  triangulation = {};
   clock.stageDone ("complex");
 
   const PowerPredicates predicates (vertex_positions, vertex_weights);

@@ -79,18 +79,7 @@ expectOrientedAwayFromX (const std::vector<Point3>& points, const WrapResult& r)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const auto point = [&] (PointIndex i) { return K::Point_3 (points[i][0], points[i][1], points[i][2]); };
-  std::map<Tuple, PointIndex> apex; // triangle of an X tetrahedron -> opposite vertex
-  const auto tets = r.xSimplices (3);
-  for (std::size_t s = 0; s < tets.size (); s += 4)
-    for (int i = 0; i < 4; ++i)
-    {
-      Tuple t;
-      for (int j = 0; j < 4; ++j)
-        if (j != i)
-          t.push_back (tets[s + j]);
-      std::sort (t.begin (), t.end ());
-      apex[t] = tets[s + i];
-    }
+  const auto apex = apexesOfXTriangles (r);
   std::size_t checked = 0;
   for (const auto& t : r.surface.triangles)
   {

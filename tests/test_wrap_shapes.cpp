@@ -175,17 +175,7 @@ TEST (WrapShapes, CoplanarPointsGiveAContractiblePatch)
   }
   const WrapResult r = computeWrap (points);
   ASSERT_EQ (r.statistics.triangulation_dimension, 2);
-  std::vector<Tuple> x;
-  for (int k = 0; k <= 2; ++k)
-  {
-    const auto flat = r.xSimplices (k);
-    for (std::size_t s = 0; s < flat.size (); s += k + 1)
-    {
-      Tuple t (flat.begin () + s, flat.begin () + s + k + 1);
-      std::sort (t.begin (), t.end ());
-      x.push_back (t);
-    }
-  }
+  const auto x = tuplesOfX (r);
   const Homology h = homology (x);
   EXPECT_EQ (h.components, 1u);
   EXPECT_EQ (h.euler, 1);
@@ -203,17 +193,7 @@ TEST (WrapShapes, ExactlyCoplanarGridIsTwoDimensional)
   const WrapResult r = computeWrap (grid);
   EXPECT_EQ (r.statistics.triangulation_dimension, 2);
   EXPECT_EQ (r.statistics.x_simplices[0], grid.size ());
-  std::vector<Tuple> x;
-  for (int k = 0; k <= 2; ++k)
-  {
-    const auto flat = r.xSimplices (k);
-    for (std::size_t s = 0; s < flat.size (); s += k + 1)
-    {
-      Tuple t (flat.begin () + s, flat.begin () + s + k + 1);
-      std::sort (t.begin (), t.end ());
-      x.push_back (t);
-    }
-  }
+  const auto x = tuplesOfX (r);
   EXPECT_EQ (homology (x).euler, 1);
   EXPECT_EQ (homology (x).betti1, 0u);
 }

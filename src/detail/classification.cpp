@@ -36,6 +36,24 @@ gather (const SimplicialComplex& complex, int k, SimplexId s, unsigned mask, std
   return n;
 }
 
+/** The local vertices of (k, s) with lambda_i > 0: lambda_i < 0 iff p_i is inside the smallest
+  * orthosphere of the facet opposite p_i (never zero: ties are perturbed). */
+unsigned
+positiveBarycentric (const SimplicialComplex& complex, const PowerPredicates& predicates, int k, SimplexId s)
+{
+  if (k == 1 && predicates.uniformWeights ())
+    return fullMask (1); // the midpoint
+  unsigned positive = 0;
+  for (int i = 0; i <= k; ++i)
+  {
+    std::uint32_t facet[3];
+    const int n = gather (complex, k, s, fullMask (k) & ~(1u << i), facet);
+    if (!predicates.insideSmallestOrthosphere (facet, n, complex.vertex (k, s, i)))
+      positive |= 1u << i;
+  }
+  return positive;
+}
+
 } // namespace
 
 Classification
@@ -58,9 +76,12 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   std::array<std::vector<std::atomic<std::uint8_t>>, 3> attached;
   for (int k = 0; k < d; ++k)
     attached[k] = std::vector<std::atomic<std::uint8_t>> (complex.size (k));
+  const bool uniform = predicates.uniformWeights ();
   forEach (complex.size (d), [&] (SimplexId t) {
     for (unsigned mask = 1; mask < fullMask (d); ++mask)
     {
+      if (uniform && maskSize (mask) == 1)
+        continue;
       const Simplex f = complex.face (d, t, mask);
       auto& flag = attached[f.dim][f.id];
       if (flag.load (std::memory_order_relaxed))
@@ -76,7 +97,6 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
     }
   });
 
-  // lambda_i < 0 iff p_i is inside the smallest orthosphere of the facet opposite p_i.
   for (int k = 1; k <= d; ++k)
     forEach (complex.size (k), [&] (SimplexId s) {
       if (k < d && attached[k][s].load (std::memory_order_relaxed))
@@ -84,14 +104,7 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
         c.classes[k][s] = SimplexClass::equivocal;
         return;
       }
-      unsigned positive = 0;
-      for (int i = 0; i <= k; ++i)
-      {
-        std::uint32_t facet[3];
-        const int n = gather (complex, k, s, fullMask (k) & ~(1u << i), facet);
-        if (!predicates.insideSmallestOrthosphere (facet, n, complex.vertex (k, s, i)))
-          positive |= 1u << i;
-      }
+      const unsigned positive = positiveBarycentric (complex, predicates, k, s);
       if (positive == 0)
         throw std::logic_error ("classify: no positive barycentric coordinate");
       if (positive != fullMask (k))
@@ -100,10 +113,9 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
         c.lowest_successor[k][s] = static_cast<std::uint8_t> (positive);
       }
     });
-  if (d > 0)
-    for (SimplexId v = 0; v < complex.size (0); ++v)
-      if (attached[0][v].load (std::memory_order_relaxed))
-        c.classes[0][v] = SimplexClass::equivocal;
+  for (SimplexId v = 0; v < complex.size (0); ++v)
+    if (attached[0][v].load (std::memory_order_relaxed))
+      c.classes[0][v] = SimplexClass::equivocal;
 
   for (int k = 1; k <= d; ++k)
     for (SimplexId s = 0; s < complex.size (k); ++s)

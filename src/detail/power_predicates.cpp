@@ -54,6 +54,7 @@ PowerPredicates::PowerPredicates (const std::vector<Point3>& positions, const st
   {
     const Point3& p = positions[i];
     points_->points.emplace_back (BarePoint (p[0], p[1], p[2]), weights[i]);
+    uniform_weights_ = uniform_weights_ && weights[i] == weights[0];
   }
 }
 

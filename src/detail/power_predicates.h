@@ -39,12 +39,18 @@ public:
     * \a sphere? Never undecided. Thread-safe. */
   bool insideSmallestOrthosphere (const std::uint32_t* sphere, int n, std::uint32_t q) const;
 
+  /** \brief Do all points have the same weight? Then no point is inside the smallest
+    * orthosphere of another single point (that would need |p - q|^2 < 0): no vertex is attached
+    * and no edge has a negative barycentric coordinate, and those tests need not be asked. */
+  bool uniformWeights () const { return uniform_weights_; }
+
   /** \brief How many ties the perturbation decided so far. */
   std::size_t perturbations () const { return perturbations_.load (std::memory_order_relaxed); }
 
 private:
   struct Points;
   std::unique_ptr<Points> points_;
+  bool uniform_weights_ = true;
   mutable std::atomic<std::size_t> perturbations_{0};
 };
 

@@ -6,6 +6,7 @@
 
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <CGAL/Hilbert_sort_3.h>
 #include <CGAL/Hilbert_policy_tags.h>
@@ -22,9 +23,11 @@ namespace
 
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<
     std::uint32_t, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
-// Hidden points are found from the vertex set afterwards, so cells need not store them.
-using CellBase = CGAL::Regular_triangulation_cell_base_3<
-    Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>;
+// Hidden points are found from the vertex set afterwards, so cells need not store them. The info
+// numbers the finite cells, to name neighbours.
+using CellBase = CGAL::Triangulation_cell_base_with_info_3<
+    std::uint32_t, Kernel,
+    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
 using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Regular = CGAL::Regular_triangulation_3<Kernel, Tds>;
 
@@ -80,11 +83,21 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   switch (t.dimension)
   {
   case 3:
-    top.reserve (4 * rt.number_of_finite_cells ());
+  {
+    std::uint32_t cells = 0;
+    for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
+      c->info () = cells++;
+    top.reserve (4 * std::size_t (cells));
+    t.neighbours.reserve (4 * std::size_t (cells));
     for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
       for (int i = 0; i < 4; ++i)
+      {
         top.push_back (id (c->vertex (i)));
+        const auto n = c->neighbor (i);
+        t.neighbours.push_back (rt.is_infinite (n) ? NO_NEIGHBOUR : n->info ());
+      }
     break;
+  }
   case 2:
     for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
       for (int i = 0; i < 3; ++i)

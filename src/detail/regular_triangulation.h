@@ -23,7 +23,12 @@ struct Triangulation
   /** \brief (dimension+1) vertex ids per top-dimensional simplex; tetrahedra positively
     * oriented. */
   std::vector<std::uint32_t> top_simplices;
+  /** \brief Dimension 3 only: per tetrahedron, the tetrahedron across the facet opposite each
+    * local vertex (index into the tetrahedra), or NO_NEIGHBOUR on the hull. */
+  std::vector<std::uint32_t> neighbours;
 };
+
+constexpr std::uint32_t NO_NEIGHBOUR = ~std::uint32_t (0);
 
 /** \brief Triangulates distinct, finite weighted points. */
 Triangulation

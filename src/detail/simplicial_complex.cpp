@@ -66,12 +66,6 @@ private:
   std::vector<Key> keys_;
 };
 
-std::uint64_t
-pairKey (std::uint32_t b, std::uint32_t c)
-{
-  return (std::uint64_t (b) << 32) | c;
-}
-
 void
 sort3 (std::uint32_t& a, std::uint32_t& b, std::uint32_t& c)
 {
@@ -83,7 +77,7 @@ sort3 (std::uint32_t& a, std::uint32_t& b, std::uint32_t& c)
 } // namespace
 
 SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
-                                      std::vector<std::uint32_t> top)
+                                      std::vector<std::uint32_t> top, const std::vector<std::uint32_t>& neighbours)
   : dimension_ (dimension)
 {
   if (dimension < -1 || dimension > 3 || (dimension >= 0 && top.size () % (dimension + 1) != 0))
@@ -136,35 +130,33 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
   }
   else
   {
-    const FaceTable<std::uint64_t> triangles (num_vertices, [&] (auto emit) {
-      for (std::size_t t = 0; t < num_top; ++t)
-        for (int i = 0; i < 4; ++i)
-        {
-          std::uint32_t v[3], n = 0;
-          for (int j = 0; j < 4; ++j)
-            if (j != i)
-              v[n++] = top[4 * t + j];
-          sort3 (v[0], v[1], v[2]);
-          emit (v[0], pairKey (v[1], v[2]));
-        }
-    });
-    vertices_[2].reserve (3 * triangles.size ());
-    for (std::uint32_t a = 0; a < num_vertices; ++a)
-      for (std::size_t f = triangles.begin (a); f < triangles.end (a); ++f)
-      {
-        const std::uint64_t k = triangles.key (f);
-        vertices_[2].insert (vertices_[2].end (), {a, std::uint32_t (k >> 32), std::uint32_t (k)});
-      }
-    tet_triangles_.resize (4 * num_top);
+    // A triangle is named once, by the first of its two tetrahedra (or its only one, on the
+    // hull), and the tetrahedron across learns its name through the neighbour relation.
+    if (neighbours.size () != top.size ())
+      throw std::invalid_argument ("SimplicialComplex: tetrahedra need their neighbours");
+    tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
     tet_edges_.resize (6 * num_top);
     for (std::size_t t = 0; t < num_top; ++t)
     {
       const std::uint32_t* v = &top[4 * t];
       for (int i = 0; i < 4; ++i)
       {
+        if (tet_triangles_[4 * t + i] != NO_SIMPLEX)
+          continue;
+        const SimplexId f = static_cast<SimplexId> (vertices_[2].size () / 3);
         std::uint32_t a = v[(i + 1) % 4], b = v[(i + 2) % 4], c = v[(i + 3) % 4];
         sort3 (a, b, c);
-        tet_triangles_[4 * t + i] = triangles.find (a, pairKey (b, c));
+        vertices_[2].insert (vertices_[2].end (), {a, b, c});
+        tet_triangles_[4 * t + i] = f;
+        const std::uint32_t u = neighbours[4 * t + i];
+        if (u == ~std::uint32_t (0))
+          continue;
+        int j = 0;
+        while (j < 4 && neighbours[4 * std::size_t (u) + j] != t)
+          ++j;
+        if (j == 4)
+          throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
+        tet_triangles_[4 * std::size_t (u) + j] = f;
       }
       for (int e = 0; e < 6; ++e)
         tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);

@@ -32,8 +32,11 @@ class SimplicialComplex
 {
 public:
   /** \brief Builds the complex of dimension \a dimension whose top simplices are given, (d+1)
-    * vertex ids each (tetrahedra positively oriented). Every face is created once. */
-  SimplicialComplex (int dimension, std::uint32_t num_vertices, std::vector<std::uint32_t> top_simplices);
+    * vertex ids each (tetrahedra positively oriented). Every face is created once.
+    * \param[in] neighbours dimension 3: per tetrahedron, the tetrahedron across the facet
+    *            opposite each local vertex, or ~0 on the hull (see Triangulation) */
+  SimplicialComplex (int dimension, std::uint32_t num_vertices, std::vector<std::uint32_t> top_simplices,
+                     const std::vector<std::uint32_t>& neighbours = {});
   SimplicialComplex () = default;
 
   int dimension () const { return dimension_; }

@@ -38,7 +38,7 @@ struct Pipeline
       points.push_back (s.positions[p]);
       weights.push_back (s.weights[p]);
     }
-    complex = detail::SimplicialComplex (t.dimension, static_cast<std::uint32_t> (points.size ()), std::move (t.top_simplices));
+    complex = detail::SimplicialComplex (t.dimension, static_cast<std::uint32_t> (points.size ()), std::move (t.top_simplices), t.neighbours);
     predicates = std::make_unique<detail::PowerPredicates> (points, weights);
     classification = detail::classify (complex, *predicates);
   }

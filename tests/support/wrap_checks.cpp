@@ -16,18 +16,7 @@ namespace
 std::map<std::pair<PointIndex, PointIndex>, int>
 sidesOfEdges (const WrapResult& r)
 {
-  std::set<Tuple> tet_faces;
-  const auto tets = r.xSimplices (3);
-  for (std::size_t s = 0; s < tets.size (); s += 4)
-    for (int i = 0; i < 4; ++i)
-    {
-      Tuple f;
-      for (int j = 0; j < 4; ++j)
-        if (j != i)
-          f.push_back (tets[s + j]);
-      std::sort (f.begin (), f.end ());
-      tet_faces.insert (f);
-    }
+  const auto tet_faces = apexesOfXTriangles (r);
   std::map<std::pair<PointIndex, PointIndex>, int> sides;
   for (const auto& t : r.surface.triangles)
   {
@@ -41,6 +30,24 @@ sidesOfEdges (const WrapResult& r)
 }
 
 } // namespace
+
+std::map<Tuple, PointIndex>
+apexesOfXTriangles (const WrapResult& r)
+{
+  std::map<Tuple, PointIndex> apex;
+  const auto tets = r.xSimplices (3);
+  for (std::size_t s = 0; s < tets.size (); s += 4)
+    for (int i = 0; i < 4; ++i)
+    {
+      Tuple f;
+      for (int j = 0; j < 4; ++j)
+        if (j != i)
+          f.push_back (tets[s + j]);
+      std::sort (f.begin (), f.end ());
+      apex[f] = tets[s + i];
+    }
+  return apex;
+}
 
 std::vector<Tuple>
 tuplesOfX (const WrapResult& r)

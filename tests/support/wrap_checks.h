@@ -7,6 +7,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -17,6 +18,11 @@ namespace pcl_wrap::test
 /** X, from the result's complex, as sorted tuples. */
 std::vector<Tuple>
 tuplesOfX (const WrapResult& r);
+
+/** Every triangle of a tetrahedron of X, with the tetrahedron's vertex opposite it (for a
+  * triangle of two tetrahedra, either). */
+std::map<Tuple, PointIndex>
+apexesOfXTriangles (const WrapResult& r);
 
 /** Bd X by the paper's definition (§2): X minus the simplices whose link in X is a sphere. */
 std::set<Tuple>
