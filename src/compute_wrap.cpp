@@ -48,10 +48,52 @@ WrapResult::xSimplices (int k) const
   return out;
 }
 
+namespace
+{
+
+using namespace detail;
+
+WrapSurface
+inInputIndices (const Boundary& w, const std::vector<PointIndex>& input_of_vertex)
+{
+  WrapSurface surface;
+  surface.triangles.reserve (w.triangles.size ());
+  for (const auto& t : w.triangles)
+    surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
+  for (const auto& e : w.dangling_edges)
+    surface.dangling_edges.push_back ({std::min (input_of_vertex[e[0]], input_of_vertex[e[1]]),
+                                       std::max (input_of_vertex[e[0]], input_of_vertex[e[1]])});
+  for (std::uint32_t v : w.isolated_vertices)
+    surface.isolated_vertices.push_back (input_of_vertex[v]);
+  return surface;
+}
+
+std::array<SimplexList, 4>
+inInputIndices (const SimplicialComplex& complex, const Classification& classification, const Retraction& x,
+                const std::vector<PointIndex>& input_of_vertex)
+{
+  std::array<SimplexList, 4> lists;
+  for (int k = 0; k <= 3; ++k)
+  {
+    SimplexList& list = lists[k];
+    list.vertices.reserve ((k + 1) * complex.size (k));
+    list.classes = classification.classes[k];
+    list.in_x.resize (complex.size (k));
+    for (SimplexId s = 0; s < complex.size (k); ++s)
+    {
+      list.in_x[s] = x.inY ({k, s});
+      for (int i = 0; i <= k; ++i)
+        list.vertices.push_back (input_of_vertex[complex.vertex (k, s, i)]);
+    }
+  }
+  return lists;
+}
+
+} // namespace
+
 WrapResult
 computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters, const StageObserver& observer)
 {
-  using namespace detail;
   std::unique_ptr<tbb::global_control> threads;
   if (parameters.num_threads > 0)
     threads = std::make_unique<tbb::global_control> (tbb::global_control::max_allowed_parallelism,
@@ -105,40 +147,15 @@ computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters
   stats.collapses = x.retract ();
   clock.stageDone ("collapse");
 
-  const Boundary w = extractBoundary (complex, x);
-  auto& surface = result.surface;
-  surface.triangles.reserve (w.triangles.size ());
-  for (const auto& t : w.triangles)
-    surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
-  for (const auto& e : w.dangling_edges)
-    surface.dangling_edges.push_back ({std::min (input_of_vertex[e[0]], input_of_vertex[e[1]]),
-                                       std::max (input_of_vertex[e[0]], input_of_vertex[e[1]])});
-  for (std::uint32_t v : w.isolated_vertices)
-    surface.isolated_vertices.push_back (input_of_vertex[v]);
-  stats.w_triangles = surface.triangles.size ();
-  stats.w_dangling_edges = surface.dangling_edges.size ();
-  stats.w_isolated_vertices = surface.isolated_vertices.size ();
-
+  result.surface = inInputIndices (extractBoundary (complex, x), input_of_vertex);
+  stats.w_triangles = result.surface.triangles.size ();
+  stats.w_dangling_edges = result.surface.dangling_edges.size ();
+  stats.w_isolated_vertices = result.surface.isolated_vertices.size ();
   for (int k = 0; k <= 3; ++k)
-  {
-    SimplexList* list = parameters.keep_complex ? &result.complex[k] : nullptr;
-    if (list)
-    {
-      list->vertices.reserve ((k + 1) * complex.size (k));
-      list->classes = classification.classes[k];
-      list->in_x.resize (complex.size (k));
-    }
     for (SimplexId s = 0; s < complex.size (k); ++s)
-    {
-      const bool in_x = x.inY ({k, s});
-      stats.x_simplices[k] += in_x;
-      if (!list)
-        continue;
-      list->in_x[s] = in_x;
-      for (int i = 0; i <= k; ++i)
-        list->vertices.push_back (input_of_vertex[complex.vertex (k, s, i)]);
-    }
-  }
+      stats.x_simplices[k] += x.inY ({k, s});
+  if (parameters.keep_complex)
+    result.complex = inInputIndices (complex, classification, x, input_of_vertex);
   clock.stageDone ("boundary");
   return result;
 }
