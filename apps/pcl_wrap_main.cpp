@@ -9,6 +9,7 @@
 #include <pcl_wrap/compute_wrap.h>
 
 #include <cstdlib>
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <unistd.h>
@@ -113,7 +114,8 @@ main (int argc, char** argv)
       std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input << '\n';
     const StageObserver observer = [&] (const std::string& stage, double seconds) {
       if (progress)
-        std::cerr << "  " << stage << " done in " << seconds << " s\n";
+        std::cerr << "  " << std::left << std::setw (16) << stage << std::right << std::fixed << std::setprecision (3)
+                  << seconds << " s\n" << std::defaultfloat;
     };
     const WrapResult result = computeWrap (points, o.parameters, observer);
 
