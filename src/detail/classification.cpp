@@ -71,31 +71,24 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
     return c; // no simplex but a lone vertex: a sink
 
   // Attachment: some link vertex inside the smallest orthosphere. The link vertices of a face
-  // are exactly the other vertices of the top simplices containing it, so one pass over the top
-  // simplices tests them all. Top simplices themselves are never attached.
+  // are the opposite vertices of its cofaces one dimension up, so testing every facet of every
+  // simplex against the vertex opposite it asks each (face, link vertex) question exactly once:
+  // the same questions whatever the number of threads.
   std::array<std::vector<std::atomic<std::uint8_t>>, 3> attached;
   for (int k = 0; k < d; ++k)
     attached[k] = std::vector<std::atomic<std::uint8_t>> (complex.size (k));
   const bool uniform = predicates.uniformWeights ();
-  forEach (complex.size (d), [&] (SimplexId t) {
-    for (unsigned mask = 1; mask < fullMask (d); ++mask)
-    {
-      if (uniform && maskSize (mask) == 1)
-        continue;
-      const Simplex f = complex.face (d, t, mask);
-      auto& flag = attached[f.dim][f.id];
-      if (flag.load (std::memory_order_relaxed))
-        continue;
-      std::uint32_t sphere[4];
-      const int n = gather (complex, d, t, mask, sphere);
-      for (int q = 0; q <= d; ++q)
-        if (!(mask & (1u << q)) && predicates.insideSmallestOrthosphere (sphere, n, complex.vertex (d, t, q)))
-        {
-          flag.store (1, std::memory_order_relaxed);
-          break;
-        }
-    }
-  });
+  for (int m = uniform ? 2 : 1; m <= d; ++m)
+    forEach (complex.size (m), [&] (SimplexId s) {
+      for (int i = 0; i <= m; ++i)
+      {
+        const unsigned mask = fullMask (m) & ~(1u << i);
+        std::uint32_t sphere[3];
+        const int n = gather (complex, m, s, mask, sphere);
+        if (predicates.insideSmallestOrthosphere (sphere, n, complex.vertex (m, s, i)))
+          attached[m - 1][complex.face (m, s, mask).id].store (1, std::memory_order_relaxed);
+      }
+    });
 
   for (int k = 1; k <= d; ++k)
     forEach (complex.size (k), [&] (SimplexId s) {
