@@ -4,6 +4,7 @@
 // Classification (ALGORITHM.md §2-§4): the engine's exact predicates against an independent
 // rational construction, and the invariants of the flow relation on many random inputs.
 #include "support/exact_reference.h"
+#include "support/flow_checks.h"
 #include "support/pipeline.h"
 #include "support/samplers.h"
 
@@ -36,15 +37,6 @@ samples ()
       {"sphere", [] (std::size_t n, unsigned s) { return sphereSample (n, s, 0.05); }},
       {"torus", [] (std::size_t n, unsigned s) { return torusSample (n, s); }}};
   return all;
-}
-
-template <class F>
-void
-forEachSimplex (const Pipeline& p, const F& f)
-{
-  for (int k = 0; k <= p.dimension (); ++k)
-    for (SimplexId s = 0; s < p.complex.size (k); ++s)
-      f (Simplex{k, s});
 }
 
 std::vector<std::uint32_t>
@@ -85,25 +77,6 @@ TEST (Classification, MatchesExactRationalReference)
   }
 }
 
-/** The confident simplex each equivocal simplex succeeds, found by scanning every confident
-  * simplex's successors (the proper faces containing its lowest successor). */
-std::map<std::pair<int, SimplexId>, std::vector<Simplex>>
-predecessorsBySuccession (const Pipeline& p)
-{
-  std::map<std::pair<int, SimplexId>, std::vector<Simplex>> pred;
-  forEachSimplex (p, [&] (Simplex tau) {
-    if (p.classification.of (tau) != SimplexClass::confident)
-      return;
-    const unsigned low = p.classification.lowest_successor[tau.dim][tau.id];
-    for (unsigned m = low; m < detail::fullMask (tau.dim); m = (m + 1) | low)
-    {
-      const Simplex successor = p.complex.face (tau.dim, tau.id, m);
-      pred[{successor.dim, successor.id}].push_back (tau);
-    }
-  });
-  return pred;
-}
-
 TEST (Classification, FlowRelationInvariants)
 {
   for (const Sample& sample : samples ())
@@ -111,31 +84,7 @@ TEST (Classification, FlowRelationInvariants)
       for (unsigned seed = 1; seed <= 3; ++seed)
       {
         SCOPED_TRACE (sample.name + " n " + std::to_string (n) + " seed " + std::to_string (seed));
-        const Pipeline p (sample.make (n, seed));
-        const auto& c = p.classification;
-        forEachSimplex (p, [&] (Simplex tau) {
-          if (c.of (tau) != SimplexClass::confident)
-            return;
-          const unsigned low = c.lowest_successor[tau.dim][tau.id];
-          // LS(tau) is a proper, non-empty face, and every successor is equivocal.
-          ASSERT_NE (low, 0u);
-          ASSERT_NE (low, detail::fullMask (tau.dim));
-          for (unsigned m = low; m < detail::fullMask (tau.dim); m = (m + 1) | low)
-            ASSERT_EQ (c.of (p.complex.face (tau.dim, tau.id, m)), SimplexClass::equivocal);
-        });
-        // Claim 8: every equivocal simplex succeeds exactly one confident simplex.
-        const auto pred = predecessorsBySuccession (p);
-        std::size_t equivocal = 0;
-        forEachSimplex (p, [&] (Simplex v) {
-          if (c.of (v) != SimplexClass::equivocal)
-            return;
-          ++equivocal;
-          auto it = pred.find ({v.dim, v.id});
-          ASSERT_TRUE (it != pred.end ()) << "equivocal simplex without predecessor";
-          ASSERT_EQ (it->second.size (), 1u) << "equivocal simplex with several predecessors";
-        });
-        EXPECT_GT (equivocal, n);
-        EXPECT_EQ (c.extra_predecessors, 0u);
+        expectFlowInvariants (Pipeline (sample.make (n, seed)));
       }
 }
 

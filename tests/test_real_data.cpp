@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 namespace pcl_wrap::test
@@ -50,6 +51,20 @@ TEST (RealData, KittenScanAndFandiskModelKeepTheInvariants)
     if (name == "fandisk.off")
       EXPECT_GT (r.statistics.perturbations, 0u) << "the CAD model has exact ties";
   }
+}
+
+TEST (RealData, BunnyQuantisedToAMillimetreGridKeepsTheInvariants)
+{
+  // bunny00.off is one unit across; the real bunny is about 15 cm. Rounding to its millimetres
+  // (1/150 of a unit) makes a grid full of exact ties and duplicates, as a quantising sensor does.
+  auto points = load ("bunny00.off");
+  for (auto& p : points)
+    for (double& c : p)
+      c = std::round (c * 150.0) / 150.0;
+  const WrapResult r = computeWrap (points);
+  EXPECT_GT (r.statistics.points_duplicate, 0u);
+  EXPECT_GT (r.statistics.perturbations, 0u);
+  expectWrapInvariants (r);
 }
 
 } // namespace
