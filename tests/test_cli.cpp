@@ -159,9 +159,16 @@ TEST_F (Cli, MalformedInputGivesOneErrorLineAndNoOutput)
                                     "property float y\nproperty float z\nend_header\n\x01\x02");
   writeText (DIR + "junk.pcd", std::string ("\x7f\x45garbage\x00\x01 more", 16));
   writeText (DIR + "points.las", "1 2 3\n");
+  // Headers declaring far more data than the file holds (PCL would allocate it all first).
+  writeText (DIR + "huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
+                                     "property float y\nproperty float z\nend_header\n0 0 0\n");
+  writeText (DIR + "huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2000000000\n"
+                               "HEIGHT 1\nPOINTS 2000000000\nDATA binary\n\x01\x02");
+  writeText (DIR + "fields.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\n"
+                                 "DATA ascii\n0 0 0\n");
   for (const std::string input : {"empty.xyz", "comments.xyz", "garbage.xyz", "columns.xyz", "truncated.off",
                                   "noheader.off", "novertex.obj", "badvertex.obj", "truncated.ply", "junk.pcd",
-                                  "points.las", "missing.xyz"})
+                                  "points.las", "missing.xyz", "huge_ascii.ply", "huge.pcd", "fields.pcd"})
   {
     SCOPED_TRACE (input);
     std::remove ((DIR + "never.ply").c_str ());

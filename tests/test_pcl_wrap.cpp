@@ -64,7 +64,8 @@ TEST (PclWrap, CloudWithNansAndIndicesToPolygonMeshAndBackThroughPly)
       ASSERT_TRUE (std::isfinite ((*cloud)[v].x)) << "polygon uses a NaN point";
       used.insert (v);
     }
-    triangles.push_back ({polygon.vertices[0], polygon.vertices[1], polygon.vertices[2]});
+    triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
+                          std::uint32_t (polygon.vertices[2])});
   }
   EXPECT_EQ (used.size (), indices->size () - 3); // a sphere: every finite selected point on W
   EXPECT_TRUE (describeSurface (triangles).closed_manifold);

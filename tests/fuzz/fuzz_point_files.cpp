@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// libFuzzer: arbitrary bytes as each input format of the command-line tool. A file either reads
+// or gives a FileError; anything else (a crash, another exception) is a finding.
+#include "point_file.h"
+
+#include <pcl/console/print.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+extern "C" int
+LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
+{
+  static const char* const EXTENSIONS[] = {".xyz", ".off", ".obj", ".ply", ".pcd"};
+  static const std::string stem = "/tmp/pcl_wrap_fuzz_" + std::to_string (::getpid ());
+  pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
+  if (size < 1)
+    return 0;
+  const std::string path = stem + EXTENSIONS[data[0] % 5];
+  std::ofstream (path, std::ios::binary).write (reinterpret_cast<const char*> (data + 1), std::streamsize (size - 1));
+  try
+  {
+    pcl_wrap::apps::readPoints (path);
+  }
+  catch (const pcl_wrap::apps::FileError&)
+  {
+  }
+  std::remove (path.c_str ());
+  return 0;
+}
