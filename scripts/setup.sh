@@ -8,6 +8,7 @@ PACKAGES=(
   build-essential cmake ccache pkg-config python3
   libpcl-dev libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libeigen3-dev libboost-dev
   libgtest-dev mpi-default-dev
+  clang libclang-rt-dev llvm   # the sanitizer and fuzzing build (libFuzzer, ASan, UBSan)
   libcgal-demo   # sample data: the Stanford bunny, kitten, fandisk
 )
 

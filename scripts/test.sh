@@ -1,9 +1,18 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Sets up, builds and runs the whole test suite.
+# Sets up, builds and runs the whole test suite: every test on the Release build; then, on a
+# clang build with AddressSanitizer and UndefinedBehaviorSanitizer, the unit and end-to-end tests
+# again and a bounded run of each fuzzer (PCL_WRAP_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
+jobs="$(nproc)"
+
 scripts/build.sh
-cd build
-ctest -j"$(nproc)" --output-on-failure
+(cd build && ctest -j"$jobs" --output-on-failure)
+
+CC=clang CXX=clang++ BUILD_DIR=build-sanitize scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DPCL_WRAP_SANITIZE=address,undefined -DPCL_WRAP_BUILD_FUZZERS=ON -DPCL_WRAP_BUILD_BENCH=OFF \
+  -DPCL_WRAP_FUZZ_SECONDS="${PCL_WRAP_FUZZ_SECONDS:-60}"
+# The real-data tests and the installed-package test add nothing a sanitizer would see but time.
+(cd build-sanitize && ctest -j"$jobs" --output-on-failure -E "RealData|DownstreamConsumer")
