@@ -198,6 +198,21 @@ pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path)
   return points;
 }
 
+/** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:
+  * every token of the data from \a start on must be a number ("nan" and "inf" written out are). */
+template <class Fail>
+void
+checkAsciiData (std::ifstream& in, std::uint64_t start, const Fail& bad)
+{
+  in.clear ();
+  in.seekg (std::streamoff (start));
+  std::vector<double> numbers;
+  std::string line;
+  for (std::size_t number = 1; std::getline (in, line); ++number)
+    if (!parseNumbers (line, numbers))
+      bad ("data line " + std::to_string (number) + ": not a number");
+}
+
 /** PCL's PCD reader trusts the header and corrupts memory on a malformed one (found by
   * fuzzing): check the header strictly, and the data size it declares against the file, before
   * handing the file over. */
@@ -282,7 +297,9 @@ checkPcdHeader (const std::string& path)
         points > 0xffffffffULL / point_size || std::uint64_t (sizes[1]) != points * point_size)
       bad ("compressed data does not match its header");
   }
-  else if (data != "ascii")
+  else if (data == "ascii")
+    checkAsciiData (in, start, bad);
+  else
     bad ("unknown DATA '" + data + "'");
 }
 
@@ -340,6 +357,8 @@ checkPlyHeader (const std::string& path)
       bad ("the header declares more data than the file holds");
     available -= count * least;
   }
+  if (format == "ascii")
+    checkAsciiData (in, start, bad);
 }
 
 std::vector<Point3>

@@ -145,39 +145,80 @@ assert set(t) >= {"triangulation", "classification", "collapse", "total"}
   EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()), 0);
 }
 
+/** Every input format, broken in every way the issue lists: empty, binary junk, truncated,
+  * wrong counts, garbage numbers; plus headers declaring more data than the file holds. */
+std::vector<std::pair<std::string, std::string>>
+malformedFiles ()
+{
+  const std::string junk ("\x7f\x45\x00\x01\xff\xfe garbage \x00\x02\x03", 18);
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nend_header\n";
+  const std::string pcd = "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
+                          "POINTS 3\nDATA ascii\n";
+  return {
+      {"empty.xyz", ""},
+      {"junk.xyz", junk},
+      {"comments.xyz", "# nothing\n\n"},
+      {"garbage.xyz", "1 2 3\n4 five 6\n"},
+      {"columns.xyz", "1 2 3\n4 5 6 7\n"},
+      {"mixed_columns.xyz", "1 2 3\n4 5 6 0 0 1\n"},
+      {"empty.off", ""},
+      {"junk.off", junk},
+      {"truncated.off", "OFF\n10 0 0\n1 2 3\n4 5 6\n"},
+      {"noheader.off", "3 0 0\n1 2 3\n"},
+      {"count.off", "OFF\n-4 0 0\n"},
+      {"garbage.off", "OFF\n2 0 0\n1 2 3\n4 x 6\n"},
+      {"empty.obj", ""},
+      {"junk.obj", junk},
+      {"novertex.obj", "f 1 2 3\n"},
+      {"short.obj", "v 1 2\n"},
+      {"garbage.obj", "v 1 2 3\nv 1 zwei 3\n"},
+      {"empty.ply", ""},
+      {"junk.ply", junk},
+      {"truncated.ply", ply + "0 0 0\n1 0 0\n"},
+      {"truncated_binary.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\n\x01\x02"},
+      {"garbage.ply", ply + "0 0 0\n1 x 0\n0 1 0\n"},
+      {"huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+                         "property float z\nend_header\n0 0 0\n"},
+      {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
+      {"empty.pcd", ""},
+      {"junk.pcd", junk},
+      {"truncated.pcd", pcd + "0 0 0\n"},
+      {"garbage.pcd", pcd + "0 0 0\n1 x 0\n0 1 0\n"},
+      {"fields.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 0\n"},
+      {"count.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 5\nDATA ascii\n"},
+      {"huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2000000000\nHEIGHT 1\n"
+                   "POINTS 2000000000\nDATA binary\n\x01\x02"},
+      {"points.las", "1 2 3\n"},
+  };
+}
+
 TEST_F (Cli, MalformedInputGivesOneErrorLineAndNoOutput)
 {
-  writeText (DIR + "empty.xyz", "");
-  writeText (DIR + "comments.xyz", "# nothing\n\n");
-  writeText (DIR + "garbage.xyz", "1 2 3\n4 five 6\n");
-  writeText (DIR + "columns.xyz", "1 2 3\n4 5 6 7\n");
-  writeText (DIR + "truncated.off", "OFF\n10 0 0\n1 2 3\n4 5 6\n");
-  writeText (DIR + "noheader.off", "3 0 0\n1 2 3\n");
-  writeText (DIR + "novertex.obj", "f 1 2 3\n");
-  writeText (DIR + "badvertex.obj", "v 1 2\n");
-  writeText (DIR + "truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 100\nproperty float x\n"
-                                    "property float y\nproperty float z\nend_header\n\x01\x02");
-  writeText (DIR + "junk.pcd", std::string ("\x7f\x45garbage\x00\x01 more", 16));
-  writeText (DIR + "points.las", "1 2 3\n");
-  // Headers declaring far more data than the file holds (PCL would allocate it all first).
-  writeText (DIR + "huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\n"
-                                     "property float y\nproperty float z\nend_header\n0 0 0\n");
-  writeText (DIR + "huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2000000000\n"
-                               "HEIGHT 1\nPOINTS 2000000000\nDATA binary\n\x01\x02");
-  writeText (DIR + "fields.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\n"
-                                 "DATA ascii\n0 0 0\n");
-  for (const std::string input : {"empty.xyz", "comments.xyz", "garbage.xyz", "columns.xyz", "truncated.off",
-                                  "noheader.off", "novertex.obj", "badvertex.obj", "truncated.ply", "junk.pcd",
-                                  "points.las", "missing.xyz", "huge_ascii.ply", "huge.pcd", "fields.pcd"})
+  auto files = malformedFiles ();
+  files.push_back ({"missing.xyz", ""});
+  for (const auto& [name, content] : files)
   {
-    SCOPED_TRACE (input);
+    SCOPED_TRACE (name);
+    if (name != "missing.xyz")
+      writeText (DIR + name, content);
     std::remove ((DIR + "never.ply").c_str ());
-    const CliRun run = runCli (DIR + input + " " + DIR + "never.ply");
+    const CliRun run = runCli (DIR + name + " " + DIR + "never.ply");
     EXPECT_NE (run.status, 0);
     EXPECT_FALSE (exists (DIR + "never.ply"));
     EXPECT_EQ (std::count (run.err.begin (), run.err.end (), '\n'), 1) << run.err;
-    EXPECT_NE (run.err.find (input), std::string::npos) << "the error names the file: " << run.err;
+    EXPECT_NE (run.err.find (name), std::string::npos) << "the error names the file: " << run.err;
   }
+}
+
+TEST_F (Cli, UnwritableOutputGivesOneErrorLine)
+{
+  writeText (DIR + "four.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
+  const CliRun run = runCli (DIR + "four.xyz " + DIR + "no/such/dir/out.ply");
+  EXPECT_EQ (run.status, 1);
+  EXPECT_EQ (std::count (run.err.begin (), run.err.end (), '\n'), 1) << run.err;
+  EXPECT_NE (run.err.find ("out.ply"), std::string::npos);
 }
 
 TEST_F (Cli, UsageErrors)
