@@ -8,6 +8,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -32,6 +33,11 @@ printUsage (std::ostream& out)
          "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts\n"
          "  --stats               print a summary\n"
          "  --stats-json FILE     write the statistics, with timings per stage, as JSON\n"
+         "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
+         "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
+         "  --weight-scale S      multiply every weight by S (default "
+      << defaults.weight_scale
+      << ")\n"
          "  --threads N           worker threads, 0 = all cores (default "
       << defaults.num_threads
       << ")\n"
@@ -77,6 +83,17 @@ parseOptions (int argc, char** argv)
       o.stats_json = value ();
     else if (arg == "--quiet")
       o.quiet = true;
+    else if (arg == "--weight-field")
+      o.parameters.weight_field = value ();
+    else if (arg == "--weight-scale")
+    {
+      const std::string v = value ();
+      char* end = nullptr;
+      const double scale = std::strtod (v.c_str (), &end);
+      if (v.empty () || *end != '\0' || !std::isfinite (scale))
+        usageError ("--weight-scale takes a finite number");
+      o.parameters.weight_scale = scale;
+    }
     else if (arg == "--threads")
     {
       const std::string v = value ();
@@ -109,7 +126,8 @@ main (int argc, char** argv)
   const bool progress = !o.quiet && ::isatty (STDERR_FILENO);
   try
   {
-    const std::vector<Point3> points = apps::readPoints (o.input);
+    const apps::PointFile file = apps::readPointFile (o.input, o.parameters.weight_field);
+    const std::vector<Point3>& points = file.points;
     if (progress)
       std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input << '\n';
     const StageObserver observer = [&] (const std::string& stage, double seconds) {
@@ -117,13 +135,13 @@ main (int argc, char** argv)
         std::cerr << "  " << std::left << std::setw (16) << stage << std::right << std::fixed << std::setprecision (3)
                   << seconds << " s\n" << std::defaultfloat;
     };
-    const WrapResult result = computeWrap (points, o.parameters, observer);
+    const WrapResult result = computeWrap (points, file.weights, o.parameters, observer);
 
     apps::writeMesh (o.output, points, result.surface.triangles);
     if (!o.complex_json.empty ())
       apps::writeAtomically (o.complex_json, [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
     if (!o.stats_json.empty ())
-      apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { apps::writeStatisticsJson (out, result.statistics); });
+      apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { apps::writeStatisticsJson (out, result); });
     if (o.stats)
       apps::printSummary (std::cout, result.statistics);
   }

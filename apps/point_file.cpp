@@ -2,7 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "point_file.h"
 
+#include <pcl_wrap/point_field.h>
+
 #include <pcl/PCLPointCloud2.h>
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -70,11 +73,11 @@ openText (const std::string& path)
   return in;
 }
 
-std::vector<Point3>
+PointFile
 readXyz (const std::string& path)
 {
   std::ifstream in = openText (path);
-  std::vector<Point3> points;
+  PointFile file;
   std::vector<double> numbers;
   std::string line;
   std::size_t columns = 0;
@@ -84,16 +87,18 @@ readXyz (const std::string& path)
       fail (path, "line " + std::to_string (number) + ": not a number");
     if (numbers.empty ())
       continue;
-    if (numbers.size () != 3 && numbers.size () != 6)
-      fail (path, "line " + std::to_string (number) + ": expected 3 numbers (x y z) or 6 (x y z nx ny nz), found " +
-                      std::to_string (numbers.size ()));
+    if (numbers.size () != 3 && numbers.size () != 4 && numbers.size () != 6)
+      fail (path, "line " + std::to_string (number) + ": expected 3 numbers (x y z), 4 (x y z weight) or 6 " +
+                      "(x y z nx ny nz), found " + std::to_string (numbers.size ()));
     if (columns != 0 && numbers.size () != columns)
       fail (path, "line " + std::to_string (number) + ": " + std::to_string (numbers.size ()) +
                       " numbers where earlier lines have " + std::to_string (columns));
     columns = numbers.size ();
-    points.push_back ({numbers[0], numbers[1], numbers[2]});
+    file.points.push_back ({numbers[0], numbers[1], numbers[2]});
+    if (columns == 4)
+      file.weights.push_back (numbers[3]);
   }
-  return points;
+  return file;
 }
 
 std::vector<Point3>
@@ -164,38 +169,49 @@ readObj (const std::string& path)
   return points;
 }
 
-/** x, y, z of every point of a PCL cloud with float or double coordinates. */
-std::vector<Point3>
-pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path)
+/** The first value of a numeric field of point i. */
+double
+valueOf (const pcl::PCLPointCloud2& cloud, const pcl::PCLPointField& field, std::size_t i)
+{
+  return readPointField (&cloud.data[i * cloud.point_step], field);
+}
+
+/** x, y, z (float or double) of every point of a PCL cloud, and the weight field's values. */
+PointFile
+pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path, const std::string& weight_field)
 {
   const pcl::PCLPointField* xyz[3] = {nullptr, nullptr, nullptr};
+  const pcl::PCLPointField* weight = nullptr;
   for (const auto& field : cloud.fields)
+  {
     for (int a = 0; a < 3; ++a)
       if (field.name == std::string (1, "xyz"[a]))
         xyz[a] = &field;
+    if (!weight_field.empty () && field.name == weight_field)
+      weight = &field;
+  }
   for (int a = 0; a < 3; ++a)
     if (!xyz[a] || (xyz[a]->datatype != pcl::PCLPointField::FLOAT32 && xyz[a]->datatype != pcl::PCLPointField::FLOAT64))
       fail (path, std::string ("no float or double field ") + "xyz"[a]);
-    else if (xyz[a]->offset + (xyz[a]->datatype == pcl::PCLPointField::FLOAT64 ? 8u : 4u) > cloud.point_step)
-      fail (path, "field offset beyond the point size");
+  if (!weight_field.empty () && (!weight || weight->datatype < pcl::PCLPointField::INT8 ||
+                                 weight->datatype > pcl::PCLPointField::FLOAT64))
+    fail (path, "no numeric field '" + weight_field + "' for the weights");
+  for (const auto* field : {xyz[0], xyz[1], xyz[2], weight})
+    if (field && field->offset + pcl::getFieldSize (field->datatype) > cloud.point_step)
+      fail (path, "field " + field->name + " beyond the point size");
   const std::size_t n = std::size_t (cloud.width) * cloud.height;
   if (n * cloud.point_step > cloud.data.size ())
     fail (path, "point data shorter than its header says");
-  std::vector<Point3> points (n);
+  PointFile file;
+  file.points.resize (n);
   for (std::size_t i = 0; i < n; ++i)
+  {
     for (int a = 0; a < 3; ++a)
-    {
-      const std::uint8_t* at = &cloud.data[i * cloud.point_step + xyz[a]->offset];
-      if (xyz[a]->datatype == pcl::PCLPointField::FLOAT64)
-        std::memcpy (&points[i][a], at, sizeof (double));
-      else
-      {
-        float f;
-        std::memcpy (&f, at, sizeof (float));
-        points[i][a] = f;
-      }
-    }
-  return points;
+      file.points[i][a] = valueOf (cloud, *xyz[a], i);
+    if (weight)
+      file.weights.push_back (valueOf (cloud, *weight, i));
+  }
+  return file;
 }
 
 /** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:
@@ -361,8 +377,8 @@ checkPlyHeader (const std::string& path)
     checkAsciiData (in, start, bad);
 }
 
-std::vector<Point3>
-readWithPcl (const std::string& path, bool pcd)
+PointFile
+readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
 {
   if (!std::ifstream (path))
     fail (path, std::string ("cannot open: ") + std::strerror (errno));
@@ -392,29 +408,45 @@ readWithPcl (const std::string& path, bool pcd)
   pcl::console::setVerbosityLevel (verbosity);
   if (status < 0)
     fail (path, std::string ("malformed ") + (pcd ? "PCD" : "PLY") + " file");
-  return pointsOf (cloud, path);
+  return pointsOf (cloud, path, weight_field);
 }
 
 } // namespace
 
+PointFile
+readPointFile (const std::string& path, const std::string& weight_field)
+{
+  const std::string ext = extensionOf (path);
+  const bool pcl_format = ext == ".pcd" || ext == ".ply";
+  if (!weight_field.empty () && !pcl_format)
+    fail (path, "only .pcd and .ply files have fields to take weights from (a .xyz file's weights are its "
+                "4th column)");
+  PointFile file;
+  if (pcl_format)
+    file = readWithPcl (path, ext == ".pcd", weight_field);
+  else if (ext == ".xyz" || ext == ".txt")
+    file = readXyz (path);
+  else if (ext == ".off")
+    file.points = readOff (path);
+  else if (ext == ".obj")
+    file.points = readObj (path);
+  else
+    fail (path, "unknown input format '" + ext + "' (expected .pcd, .ply, .xyz, .txt, .off or .obj)");
+  if (file.points.empty ())
+    fail (path, "no points");
+  for (std::size_t i = 0; i < file.weights.size (); ++i)
+  {
+    const Point3& p = file.points[i];
+    if (std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]) && !std::isfinite (file.weights[i]))
+      fail (path, "point " + std::to_string (i) + ": the weight is not finite");
+  }
+  return file;
+}
+
 std::vector<Point3>
 readPoints (const std::string& path)
 {
-  const std::string ext = extensionOf (path);
-  std::vector<Point3> points;
-  if (ext == ".pcd" || ext == ".ply")
-    points = readWithPcl (path, ext == ".pcd");
-  else if (ext == ".xyz" || ext == ".txt")
-    points = readXyz (path);
-  else if (ext == ".off")
-    points = readOff (path);
-  else if (ext == ".obj")
-    points = readObj (path);
-  else
-    fail (path, "unknown input format '" + ext + "' (expected .pcd, .ply, .xyz, .txt, .off or .obj)");
-  if (points.empty ())
-    fail (path, "no points");
-  return points;
+  return readPointFile (path).points;
 }
 
 } // namespace pcl_wrap::apps

@@ -17,11 +17,24 @@ struct FileError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/** \brief The points of a file, with their weights when the file has them. */
+struct PointFile
+{
+  std::vector<Point3> points;
+  std::vector<double> weights; ///< empty, or one per point
+};
+
 /** \brief Reads the points of a file, by extension: .pcd and .ply through PCL's readers, .xyz and
-  * .txt (lines "x y z" or "x y z nx ny nz"; blank lines and # comments skipped), .off and .obj
-  * (vertices only). Coordinates are kept in double precision; point i is the i-th point (data
-  * line) of the file.
-  * \throws FileError when the file is unreadable, empty or malformed */
+  * .txt (lines "x y z", "x y z w" with a weight, or "x y z nx ny nz"; blank lines and # comments
+  * skipped), .off and .obj (vertices only). Coordinates are kept in double precision; point i is
+  * the i-th point (data line) of the file.
+  * \param[in] weight_field for .pcd and .ply, the field holding the weights (empty: none)
+  * \throws FileError when the file is unreadable, empty or malformed, the weight field is missing
+  *         or not allowed for the format, or a finite point has a non-finite weight */
+PointFile
+readPointFile (const std::string& path, const std::string& weight_field = "");
+
+/** \brief The points of readPointFile(), without weights. */
 std::vector<Point3>
 readPoints (const std::string& path);
 

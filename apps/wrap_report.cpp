@@ -106,11 +106,14 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
 }
 
 void
-writeStatisticsJson (std::ostream& out, const WrapStatistics& s)
+writeStatisticsJson (std::ostream& out, const WrapResult& result)
 {
+  const WrapStatistics& s = result.statistics;
   out << std::setprecision (9) << "{\"points\":{\"input\":" << s.points_input << ",\"used\":" << s.points_used
       << ",\"skipped\":" << s.points_skipped << ",\"duplicate\":" << s.points_duplicate
-      << ",\"hidden\":" << s.points_hidden << "},\"triangulation_dimension\":" << s.triangulation_dimension
+      << ",\"hidden\":" << s.points_hidden << "},\"hidden\":";
+  writeList (out, result.hidden);
+  out << ",\"triangulation_dimension\":" << s.triangulation_dimension
       << ",\"simplices\":{";
   for (int k = 0; k <= 3; ++k)
   {

@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace pcl_wrap
 {
@@ -94,6 +96,16 @@ inInputIndices (const SimplicialComplex& complex, const Classification& classifi
 WrapResult
 computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters, const StageObserver& observer)
 {
+  return computeWrap (points, {}, parameters, observer);
+}
+
+WrapResult
+computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights, const WrapParameters& parameters,
+             const StageObserver& observer)
+{
+  if (!weights.empty () && weights.size () != points.size ())
+    throw std::invalid_argument ("computeWrap: " + std::to_string (weights.size ()) + " weights for " +
+                                 std::to_string (points.size ()) + " points");
   std::unique_ptr<tbb::global_control> threads;
   if (parameters.num_threads > 0)
     threads = std::make_unique<tbb::global_control> (tbb::global_control::max_allowed_parallelism,
@@ -102,7 +114,11 @@ computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters
   WrapStatistics& stats = result.statistics;
   StageClock clock (stats, observer);
 
-  InputPoints input = selectInputPoints (points, {});
+  std::vector<double> scaled (weights);
+  for (double& w : scaled)
+    w *= parameters.weight_scale;
+  InputPoints input = selectInputPoints (points, scaled);
+  scaled = {};
   stats.points_input = points.size ();
   stats.points_skipped = input.skipped.size ();
   stats.points_duplicate = input.duplicates.size ();

@@ -221,6 +221,44 @@ TEST_F (Cli, UnwritableOutputGivesOneErrorLine)
   EXPECT_NE (run.err.find ("out.ply"), std::string::npos);
 }
 
+TEST_F (Cli, WeightsFromXyzColumnOrPcdField)
+{
+  // Four heavy corners (weight 10) around a light centre: the centre is hidden.
+  writeText (DIR + "weighted.xyz", "1 1 1 10\n1 -1 -1 10\n-1 1 -1 10\n-1 -1 1 10\n0 0 0 0\n");
+  pcl::PointCloud<pcl::PointXYZI> cloud;
+  for (const auto& [x, y, z, w] : std::vector<std::array<float, 4>>{{1, 1, 1, 10}, {1, -1, -1, 10}, {-1, 1, -1, 10},
+                                                                     {-1, -1, 1, 10}, {0, 0, 0, 0}})
+  {
+    pcl::PointXYZI p;
+    p.x = x, p.y = y, p.z = z, p.intensity = w;
+    cloud.push_back (p);
+  }
+  ASSERT_EQ (pcl::io::savePCDFileASCII (DIR + "weighted.pcd", cloud), 0);
+  const auto statsOf = [] (const std::string& arguments) {
+    std::remove ((DIR + "stats.json").c_str ());
+    const CliRun run = runCli (arguments + " " + DIR + "w.ply --stats-json " + DIR + "stats.json");
+    EXPECT_EQ (run.status, 0) << run.err;
+    std::ifstream in (DIR + "stats.json");
+    return std::string ((std::istreambuf_iterator<char> (in)), std::istreambuf_iterator<char> ());
+  };
+  // Without --weight-field a PCD input has no weights: nothing is hidden.
+  EXPECT_NE (statsOf (DIR + "weighted.pcd").find ("\"hidden\":[]"), std::string::npos);
+  // With the field named, and from the 4th column, the centre is hidden.
+  for (const std::string arguments : {DIR + "weighted.xyz", DIR + "weighted.pcd --weight-field intensity"})
+    EXPECT_NE (statsOf (arguments).find ("\"hidden\":[4]"), std::string::npos) << arguments;
+  // --weight-scale 0 is the unweighted wrap: nothing hidden.
+  EXPECT_NE (statsOf (DIR + "weighted.xyz --weight-scale 0").find ("\"hidden\":[]"), std::string::npos);
+
+  // Errors: a field for a text file, a missing field, a non-finite weight, a bad scale.
+  writeText (DIR + "nanweight.xyz", "0 0 0 1\n1 0 0 nan\n");
+  EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weight-field intensity").status, 1);
+  EXPECT_EQ (runCli (DIR + "weighted.pcd " + DIR + "w.ply --weight-field curvature").status, 1);
+  const CliRun nan = runCli (DIR + "nanweight.xyz " + DIR + "w.ply");
+  EXPECT_EQ (nan.status, 1);
+  EXPECT_NE (nan.err.find ("point 1"), std::string::npos) << nan.err;
+  EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weight-scale inf").status, 2);
+}
+
 TEST_F (Cli, UsageErrors)
 {
   // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.

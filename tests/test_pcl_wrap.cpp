@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -106,6 +107,56 @@ TEST (PclWrap, PointsAndPolygonsOverloadAndOtherPointTypes)
   EXPECT_EQ (points.size (), cloud->size ());
   EXPECT_EQ (polygons.size (), wrap.getStatistics ().w_triangles);
   EXPECT_EQ (polygons.size (), 2 * cloud->size () - 4); // closed genus-0 triangulation
+}
+
+TEST (PclWrap, WeightsFromAVectorOrAPointField)
+{
+  // Four heavy corners hide the light centre; the rest is a weighted random cloud.
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZI>> ();
+  std::vector<Point3> points;
+  std::vector<double> weights;
+  const auto add = [&] (float x, float y, float z, float w) {
+    pcl::PointXYZI p;
+    p.x = x, p.y = y, p.z = z, p.intensity = w;
+    cloud->push_back (p);
+    points.push_back ({x, y, z});
+    weights.push_back (w);
+  };
+  add (1, 1, 1, 10), add (1, -1, -1, 10), add (-1, 1, -1, 10), add (-1, -1, 1, 10), add (0, 0, 0, 0);
+  for (const auto& p : cubeSample (300, 4))
+    add (float (5 + p[0]), float (p[1]), float (p[2]), float (0.05 * (p[0] + 1)));
+  const WrapResult expected = computeWrap (points, weights);
+  ASSERT_EQ (expected.hidden.front (), 4u);
+
+  Wrap<pcl::PointXYZI> by_field;
+  by_field.setInputCloud (cloud);
+  by_field.setWeightField ("intensity");
+  pcl::PolygonMesh mesh;
+  by_field.reconstruct (mesh);
+  EXPECT_EQ (by_field.getResult ().hidden, expected.hidden);
+  EXPECT_EQ (by_field.getResult ().surface.triangles, expected.surface.triangles);
+  EXPECT_EQ (mesh.polygons.size (), expected.surface.triangles.size ());
+
+  Wrap<pcl::PointXYZI> by_vector;
+  by_vector.setInputCloud (cloud);
+  by_vector.setWeights (weights);
+  by_vector.reconstruct (mesh);
+  EXPECT_EQ (by_vector.getResult ().surface.triangles, expected.surface.triangles);
+
+  // Misuse: a clear error (PCL_ERROR) and an empty mesh, never a silent unweighted answer.
+  const auto fails = [&] (const std::function<void (Wrap<pcl::PointXYZI>&)>& configure) {
+    Wrap<pcl::PointXYZI> wrap;
+    wrap.setInputCloud (cloud);
+    configure (wrap);
+    pcl::PolygonMesh m;
+    wrap.reconstruct (m);
+    return m.polygons.empty () && wrap.getStatistics ().points_input == 0;
+  };
+  EXPECT_TRUE (fails ([] (auto& w) { w.setWeights ({1.0, 2.0}); }));
+  EXPECT_TRUE (fails ([] (auto& w) { w.setWeightField ("curvature"); }));
+  auto nan_weights = weights;
+  nan_weights[7] = std::numeric_limits<double>::quiet_NaN ();
+  EXPECT_TRUE (fails ([&] (auto& w) { w.setWeights (nan_weights); }));
 }
 
 TEST (PclWrap, EmptyCloudGivesEmptyMesh)

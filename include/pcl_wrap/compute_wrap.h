@@ -20,12 +20,23 @@ using StageObserver = std::function<void (const std::string& stage, double secon
 
 /** \brief The Wrap construction on plain points: the engine behind pcl_wrap::Wrap.
   *
-  * \param[in] points the input points; non-finite ones are skipped and reported, exact duplicates
-  *            are kept once (the first), the others reported
+  * \param[in] points the input points; points with a non-finite coordinate or weight are
+  *            skipped and reported; of the points at one position the one with the largest
+  *            weight (then the smallest index) is kept, the others reported as duplicates
+  * \param[in] weights empty (every weight 0) or one per point, scaled by
+  *            WrapParameters::weight_scale; points whose power cell is empty are hidden: reported,
+  *            never part of the output
   * \param[in] parameters see WrapParameters
   * \param[in] observer optional, called after every stage
   * \return the surface W, the complex and statistics, with indices into \a points
+  * \throws std::invalid_argument when \a weights is neither empty nor one per point
   */
+WrapResult
+computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights,
+             const WrapParameters& parameters = WrapParameters (),
+             const StageObserver& observer = StageObserver ());
+
+/** \brief computeWrap() with every weight 0. */
 WrapResult
 computeWrap (const std::vector<Point3>& points,
              const WrapParameters& parameters = WrapParameters (),

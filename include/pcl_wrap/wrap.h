@@ -51,6 +51,17 @@ public:
     * \param[in] num_threads the number of threads */
   void setNumberOfThreads (unsigned num_threads) { parameters_.num_threads = num_threads; }
 
+  /** \brief Weights (squared radii), one per point of the input cloud (not per index); they
+    * take precedence over a weight field. Empty: no weights.
+    * \param[in] weights the weights */
+  void setWeights (std::vector<double> weights) { weights_ = std::move (weights); }
+  /** \brief Reads the weights from this field of the points (e.g. "intensity", "curvature").
+    * \param[in] field the field's name; empty: no weights */
+  void setWeightField (const std::string& field) { parameters_.weight_field = field; }
+  /** \brief Multiplies every weight before use.
+    * \param[in] scale the factor (default 1) */
+  void setWeightScale (double scale) { parameters_.weight_scale = scale; }
+
   /** \brief The result of the last reconstruct(): W, X, classes, with indices into the input
     * cloud. */
   const WrapResult& getResult () const { return result_; }
@@ -69,6 +80,9 @@ protected:
 private:
   /** Runs the construction on input_ / indices_ and fills result_ with cloud indices. */
   void computeResult ();
+  /** The weights of the points at \a indices: from weights_, the weight field, or none.
+    * \throws std::invalid_argument on a size mismatch, a missing field or a non-finite weight */
+  std::vector<double> gatherWeights (const pcl::Indices& indices) const;
   /** computeResult(), or, if the engine fails, a PCL_ERROR and an empty result. */
   bool computeResultOrReport ();
   /** The triangles of result_ as PCL polygons, timed as the "mesh" stage. */
@@ -79,6 +93,7 @@ private:
   using pcl::SurfaceReconstruction<PointInT>::indices_;
 
   WrapParameters parameters_;
+  std::vector<double> weights_;
   WrapResult result_;
 };
 

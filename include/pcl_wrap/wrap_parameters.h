@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <string>
+
 namespace pcl_wrap
 {
 
@@ -19,6 +21,14 @@ struct WrapParameters
   /** \brief Worker threads for the parallel stages; 0 lets TBB choose (all cores). The result does
     * not depend on it. */
   unsigned num_threads = 0;
+
+  /** \brief Every weight is multiplied by this before use. A weight is a squared radius: the
+    * power distance from point p is |x - p|^2 - w_p. */
+  double weight_scale = 1.0;
+
+  /** \brief The point field that holds the weights (e.g. "intensity" or "curvature"), read by
+    * the PCL class, the command-line tool and the ROS node; empty: no weights (all 0). */
+  std::string weight_field;
 };
 
 } // namespace pcl_wrap

@@ -24,15 +24,22 @@ struct Pipeline
 {
   std::vector<Point3> points;  // per vertex id
   std::vector<double> weights; // per vertex id
+  std::vector<Point3> hidden_points;  // points with an empty power cell
+  std::vector<double> hidden_weights;
   detail::SimplicialComplex complex;
   std::unique_ptr<detail::PowerPredicates> predicates;
   detail::Classification classification;
 
-  /** Distinct finite points, all of them vertices (unweighted). */
-  explicit Pipeline (const std::vector<Point3>& input)
+  /** Finite points with weights (empty: all 0). */
+  explicit Pipeline (const std::vector<Point3>& input, const std::vector<double>& input_weights = {})
   {
-    const detail::InputPoints s = detail::selectInputPoints (input, {});
+    const detail::InputPoints s = detail::selectInputPoints (input, input_weights);
     detail::Triangulation t = detail::triangulate (s.positions, s.weights);
+    for (std::uint32_t h : t.hidden)
+    {
+      hidden_points.push_back (s.positions[h]);
+      hidden_weights.push_back (s.weights[h]);
+    }
     for (std::uint32_t p : t.point_of_vertex)
     {
       points.push_back (s.positions[p]);

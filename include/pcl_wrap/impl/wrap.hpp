@@ -2,15 +2,52 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <pcl_wrap/point_field.h>
 #include <pcl_wrap/wrap.h>
 
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 #include <exception>
 
 namespace pcl_wrap
 {
+
+template <typename PointInT> std::vector<double>
+Wrap<PointInT>::gatherWeights (const pcl::Indices& indices) const
+{
+  std::vector<double> weights;
+  if (!weights_.empty ())
+  {
+    if (weights_.size () != input_->size ())
+      throw std::invalid_argument (std::to_string (weights_.size ()) + " weights for a cloud of " +
+                                   std::to_string (input_->size ()) + " points");
+    for (const auto i : indices)
+      weights.push_back (weights_[i]);
+  }
+  else if (!parameters_.weight_field.empty ())
+  {
+    const auto fields = pcl::getFields<PointInT> ();
+    const auto field = std::find_if (fields.begin (), fields.end (),
+                                     [&] (const pcl::PCLPointField& f) { return f.name == parameters_.weight_field; });
+    if (field == fields.end ())
+      throw std::invalid_argument ("the points have no field '" + parameters_.weight_field + "'");
+    for (const auto i : indices)
+      weights.push_back (readPointField (reinterpret_cast<const std::uint8_t*> (&(*input_)[i]), *field));
+  }
+  for (std::size_t k = 0; k < weights.size (); ++k)
+  {
+    const PointInT& p = (*input_)[indices[k]];
+    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z) && !std::isfinite (weights[k]))
+      throw std::invalid_argument ("the weight of point " + std::to_string (indices[k]) + " is not finite");
+  }
+  return weights;
+}
 
 template <typename PointInT> void
 Wrap<PointInT>::computeResult ()
@@ -23,7 +60,7 @@ Wrap<PointInT>::computeResult ()
     const PointInT& p = (*input_)[i];
     points.push_back ({double (p.x), double (p.y), double (p.z)});
   }
-  result_ = computeWrap (points, parameters_);
+  result_ = computeWrap (points, gatherWeights (indices), parameters_);
 
   // Positions in `points` -> indices into the input cloud.
   const auto to_cloud = [&] (PointIndex k) { return static_cast<PointIndex> (indices[k]); };
