@@ -53,6 +53,29 @@ TEST (Degenerate, PerturbationAgreesWithCgalTriangulation)
   }
 }
 
+/** A grid whose weights alternate 0 and 1/4 (exact in binary): the power tests still tie. */
+std::vector<double>
+alternatingWeights (std::size_t n)
+{
+  std::vector<double> w (n);
+  for (std::size_t i = 0; i < n; ++i)
+    w[i] = i % 2 ? 0.25 : 0.0;
+  return w;
+}
+
+TEST (Degenerate, WeightedTiesAgreeWithCgalAndKeepTheInvariants)
+{
+  const auto grid = gridSample (5, 5, 5);
+  for (const auto& weights : {alternatingWeights (grid.size ()), std::vector<double> (grid.size (), 0.3)})
+  {
+    const Pipeline p (grid, weights);
+    expectPerturbedEmptySpheres (p);
+    EXPECT_GT (p.predicates->perturbations (), 0u);
+    expectFlowInvariants (p);
+    expectWrapInvariants (computeWrap (grid, weights));
+  }
+}
+
 TEST (Degenerate, EveryFamilyKeepsTheInvariants)
 {
   for (const auto& [name, points] : degenerateFamilies ())
