@@ -39,19 +39,7 @@ TEST (Retraction, EqualsNaiveRetractionOnExactClassesInAnyOrder)
       SCOPED_TRACE ("seed " + std::to_string (seed));
       const Pipeline p (points);
       // The reference sees only the exact rational classification, never the engine's.
-      std::vector<NaiveSimplex> del;
-      for (int k = 0; k <= p.dimension (); ++k)
-        for (SimplexId s = 0; s < p.complex.size (k); ++s)
-        {
-          const std::uint32_t* v = p.complex.vertices (k, s);
-          const ExactClass e = classifyExactly (p.points, p.weights, {v, v + k + 1}, p.dimension ());
-          NaiveSimplex n{p.tuple ({k, s}), e.cls, {}};
-          for (int i = 0; i <= k; ++i)
-            if (e.lowest_successor_mask & (1u << i))
-              n.lowest_successor.push_back (v[i]);
-          std::sort (n.lowest_successor.begin (), n.lowest_successor.end ());
-          del.push_back (std::move (n));
-        }
+      const std::vector<NaiveSimplex> del = naiveComplexWithExactClasses (p);
       const auto reference = naiveRetraction (del, 1);
       for (unsigned order = 2; order <= 4; ++order)
         ASSERT_EQ (naiveRetraction (del, order), reference) << "the naive retraction depends on its order";

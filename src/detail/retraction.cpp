@@ -19,6 +19,19 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
         ++counts_[m - 1][complex.face (m, s, fullMask (m) & ~(1u << i)).id];
 }
 
+Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
+                        const std::array<std::vector<std::uint8_t>, 4>& in_y)
+  : complex_ (complex), classification_ (classification), alive_ (in_y)
+{
+  for (int k = 0; k < 3; ++k)
+    counts_[k].assign (complex.size (k), 0);
+  for (int m = 1; m <= complex.dimension (); ++m)
+    for (SimplexId s = 0; s < complex.size (m); ++s)
+      if (alive_[m][s])
+        for (int i = 0; i <= m; ++i)
+          ++counts_[m - 1][complex.face (m, s, fullMask (m) & ~(1u << i)).id];
+}
+
 bool
 Retraction::collapsible (Simplex v) const
 {
@@ -33,35 +46,63 @@ Retraction::collapsible (Simplex v) const
 }
 
 void
+Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below)
+{
+  alive_[xi.dim][xi.id] = 0;
+  if (stamp_ != 0)
+    stamps_[xi.dim][xi.id] = stamp_;
+  if (xi.dim == 0)
+    return;
+  // The facets of xi, named by masks within tau; those containing kept_below go too.
+  for (unsigned drop = removed_mask; drop != 0; drop &= drop - 1)
+  {
+    const unsigned facet = removed_mask & ~(drop & -drop);
+    const Simplex f = complex_.face (tau.dim, tau.id, facet);
+    --counts_[f.dim][f.id];
+    if ((facet & kept_below) != kept_below)
+      work_.push_back (f); // stays, and may have become free
+  }
+}
+
+void
 Retraction::collapse (Simplex v, Simplex tau)
 {
+  // Remove every xi with v <= xi <= tau.
   const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
-  const unsigned full = fullMask (tau.dim);
-  // Remove every xi with v <= xi <= tau, and tell the facets of each that it is gone.
-  for (unsigned removed = low; removed <= full; removed = (removed + 1) | low)
-  {
-    const Simplex xi = complex_.face (tau.dim, tau.id, removed);
-    alive_[xi.dim][xi.id] = 0;
-    if (xi.dim == 0)
-      continue;
-    for (unsigned drop = removed; drop != 0; drop &= drop - 1)
-    {
-      const unsigned facet = removed & ~(drop & -drop);
-      const Simplex f = complex_.face (tau.dim, tau.id, facet);
-      --counts_[f.dim][f.id];
-      if ((facet & low) != low)
-        work_.push_back (f); // survives this collapse and may have become free
-    }
-  }
+  for (unsigned removed = low; removed <= fullMask (tau.dim); removed = (removed + 1) | low)
+    remove (complex_.face (tau.dim, tau.id, removed), removed, tau, low);
+}
+
+bool
+Retraction::deletePrincipal (Simplex s)
+{
+  // Any coface of s contains a coface one dimension up: none of those, no coface at all.
+  if (!inY (s) || cofacesInY (s) != 0)
+    return false;
+  remove (s, fullMask (s.dim), s, fullMask (s.dim));
+  return true;
+}
+
+void
+Retraction::stampRemovals (std::uint32_t stamp)
+{
+  if (stamps_[0].empty ())
+    for (int k = 0; k <= 3; ++k)
+      stamps_[k].assign (complex_.size (k), 0);
+  stamp_ = stamp;
 }
 
 std::size_t
 Retraction::retract (std::uint64_t order_seed)
 {
-  for (int k = 0; k < complex_.dimension (); ++k)
-    for (SimplexId s = 0; s < complex_.size (k); ++s)
-      if (classification_.predecessor[k][s].id != NO_SIMPLEX)
-        work_.push_back ({k, s});
+  // The first retraction starts from every equivocal simplex that is some lowest successor;
+  // later ones (after deletions) from the work the deletions queued.
+  if (!seeded_)
+    for (int k = 0; k < complex_.dimension (); ++k)
+      for (SimplexId s = 0; s < complex_.size (k); ++s)
+        if (classification_.predecessor[k][s].id != NO_SIMPLEX)
+          work_.push_back ({k, s});
+  seeded_ = true;
 
   std::mt19937_64 random (order_seed);
   std::size_t collapses = 0;

@@ -25,10 +25,26 @@ class Retraction
 public:
   Retraction (const SimplicialComplex& complex, const Classification& classification);
 
+  /** \brief Y = the simplices for which \a in_y is true (a subcomplex, e.g. X(delta) of the wrap
+    * filtration), with its coface counts, for boundary extraction or further collapses. */
+  Retraction (const SimplicialComplex& complex, const Classification& classification,
+              const std::array<std::vector<std::uint8_t>, 4>& in_y);
+
   /** \brief Collapses while a pair is collapsible; returns the number of collapses.
     * \param[in] order_seed 0 takes work in a fixed order; any other value in a random order
     *            drawn from it (the result must not depend on it: ALGORITHM.md §5.4). */
   std::size_t retract (std::uint64_t order_seed = 0);
+
+  /** \brief Deletes \a s (§8) if it is in Y and principal (no coface in Y), telling its facets;
+    * the next retract() collapses what the deletion freed. Returns whether it was deleted. */
+  bool deletePrincipal (Simplex s);
+
+  /** \brief From now on, every removed simplex remembers \a stamp (> 0): which deletion's
+    * retraction removed it. */
+  void stampRemovals (std::uint32_t stamp);
+  /** \brief The stamp of the step that removed \a s; 0 while it is in Y or when nothing was
+    * stamped. */
+  std::uint32_t removalStamp (Simplex s) const { return stamps_[s.dim].empty () ? 0 : stamps_[s.dim][s.id]; }
 
   bool inY (Simplex s) const { return alive_[s.dim][s.id] != 0; }
   /** \brief Number of cofaces of \a s of dimension s.dim + 1 still in Y. */
@@ -37,12 +53,17 @@ public:
 private:
   bool collapsible (Simplex v) const;
   void collapse (Simplex v, Simplex tau);
+  /** Takes \a xi out of Y, tells its facets, and queues the facets that stay. */
+  void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below);
 
   const SimplicialComplex& complex_;
   const Classification& classification_;
   std::array<std::vector<std::uint8_t>, 4> alive_;
   std::array<std::vector<std::uint32_t>, 3> counts_; // per k-simplex: its (k+1)-cofaces in Y
   std::vector<Simplex> work_;
+  bool seeded_ = false;
+  std::array<std::vector<std::uint32_t>, 4> stamps_;
+  std::uint32_t stamp_ = 0;
 };
 
 } // namespace pcl_wrap::detail

@@ -2,6 +2,11 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "naive_retraction.h"
 
+#include "exact_reference.h"
+#include "pipeline.h"
+
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <map>
 #include <random>
@@ -23,7 +28,7 @@ isSubset (const Tuple& a, const Tuple& b)
 } // namespace
 
 std::vector<Tuple>
-naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed)
+naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed, const std::vector<Tuple>& deletions)
 {
   std::map<Tuple, const NaiveSimplex*> by_vertices;
   for (const auto& s : del)
@@ -33,6 +38,7 @@ naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed)
     y.insert (s.vertices);
   std::mt19937 random (seed);
 
+  std::size_t next_deletion = 0;
   for (;;)
   {
     // Every collapsible pair (LS(tau), tau) of the current Y.
@@ -49,16 +55,54 @@ naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed)
       if (free)
         collapsible.push_back (&tau);
     }
-    if (collapsible.empty ())
+    if (!collapsible.empty ())
+    {
+      const NaiveSimplex& tau = *collapsible[random () % collapsible.size ()];
+      for (auto it = y.begin (); it != y.end ();)
+        if (isSubset (tau.lowest_successor, *it) && isSubset (*it, tau.vertices))
+          it = y.erase (it);
+        else
+          ++it;
+      continue;
+    }
+    // Retracted: delete the next sink that is still there and principal; stop when none is left.
+    bool deleted = false;
+    while (!deleted && next_deletion < deletions.size ())
+    {
+      const Tuple& sink = deletions[next_deletion++];
+      const bool principal = y.count (sink) && std::none_of (y.begin (), y.end (), [&] (const Tuple& xi) {
+        return xi != sink && isSubset (sink, xi);
+      });
+      if (principal)
+      {
+        y.erase (sink);
+        deleted = true;
+      }
+    }
+    if (!deleted)
       break;
-    const NaiveSimplex& tau = *collapsible[random () % collapsible.size ()];
-    for (auto it = y.begin (); it != y.end ();)
-      if (isSubset (tau.lowest_successor, *it) && isSubset (*it, tau.vertices))
-        it = y.erase (it);
-      else
-        ++it;
   }
   return {y.begin (), y.end ()};
+}
+
+std::vector<NaiveSimplex>
+naiveComplexWithExactClasses (const Pipeline& p)
+{
+  std::vector<NaiveSimplex> del;
+  for (int k = 0; k <= p.dimension (); ++k)
+    for (detail::SimplexId s = 0; s < p.complex.size (k); ++s)
+    {
+      const std::uint32_t* v = p.complex.vertices (k, s);
+      const ExactClass e = classifyExactly (p.points, p.weights, {v, v + k + 1}, p.dimension ());
+      EXPECT_FALSE (e.degenerate) << "the reference met a tie";
+      NaiveSimplex n{p.tuple ({k, s}), e.cls, {}};
+      for (int i = 0; i <= k; ++i)
+        if (e.lowest_successor_mask & (1u << i))
+          n.lowest_successor.push_back (v[i]);
+      std::sort (n.lowest_successor.begin (), n.lowest_successor.end ());
+      del.push_back (std::move (n));
+    }
+  return del;
 }
 
 } // namespace pcl_wrap::test

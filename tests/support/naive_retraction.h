@@ -19,8 +19,17 @@ struct NaiveSimplex
   std::vector<std::uint32_t> lowest_successor; // sorted; confident simplices only
 };
 
-/** X: the simplices left when no pair is collapsible, sorted. */
+/** X: the simplices left when no pair is collapsible, sorted. Then, for each simplex of
+  * \a deletions in turn that is still there and principal, deletes it and retracts again (§8). */
 std::vector<std::vector<std::uint32_t>>
-naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed);
+naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed,
+                 const std::vector<std::vector<std::uint32_t>>& deletions = {});
+
+struct Pipeline;
+
+/** Del S of \a p with the classes of the exact rational reference (never the engine's); asserts
+  * (gtest) that the reference met no tie. */
+std::vector<NaiveSimplex>
+naiveComplexWithExactClasses (const Pipeline& p);
 
 } // namespace pcl_wrap::test

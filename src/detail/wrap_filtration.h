@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "classification.h"
+#include "retraction.h"
+#include "simplicial_complex.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief The wrap filtration (ALGORITHM.md §6): every sink deleted in order of decreasing size,
+  * each deletion followed by a retraction, and every simplex given the size of the sink whose
+  * deletion removed it. X(delta) = the simplices of value <= delta, for any delta, by a filter.
+  */
+struct WrapFiltration
+{
+  /** \brief The sinks other than omega by decreasing size (exact order; equal sizes in
+    * lexicographic order of their vertices' coordinates), and their sizes (squared radii of
+    * their smallest orthospheres, rounded). */
+  std::vector<Simplex> sinks;
+  std::vector<double> sink_sizes;
+  /** \brief Per simplex: +inf when the basic construction (omega) removed it, the size of the
+    * sink whose deletion removed it, or -inf when nothing did. */
+  std::array<std::vector<double>, 4> value;
+  /** \brief Sinks still present but not principal at their turn (the theory says none). */
+  std::size_t not_principal = 0;
+  std::size_t deletions = 0;
+
+  bool inX (Simplex s, double delta) const { return value[s.dim][s.id] <= delta; }
+};
+
+/** \brief Orders the sinks of \a classification by decreasing size (vertex ids of \a complex
+  * index \a positions and \a weights). */
+void
+orderSinks (const SimplicialComplex& complex, const Classification& classification,
+            const std::vector<Point3>& positions, const std::vector<double>& weights, WrapFiltration& filtration);
+
+/** \brief The wrap filtration. \a order_seed as for Retraction::retract. */
+WrapFiltration
+wrapFiltration (const SimplicialComplex& complex, const Classification& classification,
+                const std::vector<Point3>& positions, const std::vector<double>& weights,
+                std::uint64_t order_seed = 0);
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The wrap filtration (ALGORITHM.md §6): sinks deleted by decreasing size, each deletion followed
+// by a retraction, one value per simplex; X(delta) for any delta by a filter.
+#include "support/flow_checks.h"
+#include "support/naive_retraction.h"
+#include "support/pipeline.h"
+#include "support/samplers.h"
+#include "support/topology.h"
+
+#include "detail/wrap_filtration.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <gtest/gtest.h>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+using detail::Simplex;
+using detail::SimplexId;
+
+detail::WrapFiltration
+filtrationOf (const Pipeline& p, std::uint64_t order_seed = 0)
+{
+  return detail::wrapFiltration (p.complex, p.classification, p.points, p.weights, order_seed);
+}
+
+/** X(delta) as sorted tuples. */
+std::vector<Tuple>
+xAt (const Pipeline& p, const detail::WrapFiltration& f, double delta)
+{
+  std::vector<Tuple> x;
+  forEachSimplex (p, [&] (Simplex s) {
+    if (f.inX (s, delta))
+      x.push_back (p.tuple (s));
+  });
+  std::sort (x.begin (), x.end ());
+  return x;
+}
+
+std::vector<std::vector<Point3>>
+samples (std::size_t n, unsigned seed)
+{
+  return {cubeSample (n, seed), sphereSample (n, seed, 0.05), torusSample (n, seed)};
+}
+
+TEST (WrapFiltration, ReproducesDeletionsOneByOne)
+{
+  for (unsigned seed = 1; seed <= 2; ++seed)
+    for (const auto& points : samples (250, seed))
+    {
+      const Pipeline p (points);
+      const auto f = filtrationOf (p);
+      ASSERT_FALSE (f.sinks.empty ());
+      // Delete the sinks one by one, independently, and compare after j deletions wherever the
+      // j-th and (j+1)-th sizes differ (so a threshold separates them).
+      detail::Retraction y (p.complex, p.classification);
+      y.retract ();
+      EXPECT_EQ (xAt (p, f, std::numeric_limits<double>::max ()), p.retractedX ()) << "X(inf) is the basic X";
+      std::size_t compared = 0;
+      for (std::size_t j = 0; j < f.sinks.size (); ++j)
+      {
+        if (y.deletePrincipal (f.sinks[j]))
+          y.retract ();
+        const double next = j + 1 < f.sinks.size () ? f.sink_sizes[j + 1] : -std::numeric_limits<double>::max ();
+        if (!(next < f.sink_sizes[j]) || j % 7 != 0)
+          continue;
+        std::vector<Tuple> expected;
+        forEachSimplex (p, [&] (Simplex s) {
+          if (y.inY (s))
+            expected.push_back (p.tuple (s));
+        });
+        std::sort (expected.begin (), expected.end ());
+        ASSERT_EQ (xAt (p, f, next), expected) << "after " << j + 1 << " deletions";
+        ++compared;
+      }
+      EXPECT_GT (compared, 5u);
+    }
+}
+
+TEST (WrapFiltration, EqualsNaiveDeletionsOnExactClasses)
+{
+  std::size_t compared = 0;
+  for (unsigned seed = 1; seed <= 3; ++seed)
+    for (const auto& points : samples (30, seed))
+    {
+      const Pipeline p (points);
+      const auto f = filtrationOf (p);
+      const auto del = naiveComplexWithExactClasses (p);
+      std::vector<Tuple> deletions;
+      for (std::size_t j = 0; j < f.sinks.size (); ++j)
+      {
+        deletions.push_back (p.tuple (f.sinks[j]));
+        const double next = j + 1 < f.sinks.size () ? f.sink_sizes[j + 1] : -std::numeric_limits<double>::max ();
+        if (!(next < f.sink_sizes[j]) || (j > 3 && j % 5 != 0))
+          continue;
+        ASSERT_EQ (xAt (p, f, next), naiveRetraction (del, seed, deletions)) << "after deleting " << j + 1 << " sinks";
+        ++compared;
+      }
+    }
+  EXPECT_GT (compared, 20u);
+}
+
+TEST (WrapFiltration, EverySinkIsPrincipalAtItsTurnAndOrderDoesNotMatter)
+{
+  for (unsigned seed = 1; seed <= 3; ++seed)
+    for (const auto& points : samples (1500, seed))
+    {
+      const Pipeline p (points);
+      const auto f = filtrationOf (p);
+      EXPECT_EQ (f.not_principal, 0u);
+      EXPECT_GT (f.deletions, 0u);
+      for (std::uint64_t order : {1u, 2u})
+        EXPECT_EQ (filtrationOf (p, order).value, f.value);
+    }
+}
+
+TEST (WrapFiltration, AFaceNeverLeavesBeforeItsCofacesSoEveryXIsAComplex)
+{
+  for (const auto& points : samples (1000, 4))
+  {
+    const Pipeline p (points);
+    const auto f = filtrationOf (p);
+    forEachSimplex (p, [&] (Simplex s) {
+      for (unsigned mask = 1; mask < detail::fullMask (s.dim); ++mask)
+      {
+        const Simplex face = p.complex.face (s.dim, s.id, mask);
+        ASSERT_LE (f.value[face.dim][face.id], f.value[s.dim][s.id]);
+      }
+    });
+    // Nested: X(d1) contains X(d2) for d1 > d2.
+    const auto a = xAt (p, f, f.sink_sizes[f.sink_sizes.size () / 4]);
+    const auto b = xAt (p, f, f.sink_sizes[f.sink_sizes.size () / 2]);
+    EXPECT_TRUE (std::includes (a.begin (), a.end (), b.begin (), b.end ()));
+    EXPECT_TRUE (closedUnderFaces (a));
+  }
+}
+
+/** Deleting the few largest sinks of a torus (those in its hole) opens the tunnel: X becomes a
+  * solid torus, homotopic to a circle, and no longer meets the tunnel's axis. */
+TEST (WrapFiltration, DeletingTheLargestSinksOpensTheTorusTunnel)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::size_t opened = 0;
+  for (unsigned seed = 1; seed <= 4; ++seed)
+  {
+    const auto points = torusSample (200, seed);
+    const Pipeline p (points);
+    const auto f = filtrationOf (p);
+    for (std::size_t j = 1; j <= 6 && j < f.sinks.size (); ++j)
+    {
+      if (!(f.sink_sizes[j] < f.sink_sizes[j - 1]))
+        continue;
+      const auto x = xAt (p, f, f.sink_sizes[j]);
+      const Homology h = homology (x);
+      if (h.components != 1 || h.euler != 0 || h.betti1 != 1)
+        continue;
+      const K::Segment_3 axis (K::Point_3 (0, 0, -0.4), K::Point_3 (0, 0, 0.4));
+      const auto point = [&] (std::uint32_t v) { return K::Point_3 (p.points[v][0], p.points[v][1], p.points[v][2]); };
+      bool meets = false;
+      for (const auto& t : x)
+        if (t.size () == 3)
+          meets |= CGAL::do_intersect (axis, K::Triangle_3 (point (t[0]), point (t[1]), point (t[2])));
+      EXPECT_FALSE (meets) << "seed " << seed << ": a solid torus that still spans the tunnel";
+      ++opened;
+      break;
+    }
+  }
+  EXPECT_GE (opened, 3u) << "deleting at most 6 sinks should open most tori";
+}
+
+} // namespace
+} // namespace pcl_wrap::test
