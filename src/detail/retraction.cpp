@@ -51,6 +51,8 @@ Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kep
   alive_[xi.dim][xi.id] = 0;
   if (stamp_ != 0)
     stamps_[xi.dim][xi.id] = stamp_;
+  if (in_trial_)
+    trial_.push_back (xi);
   if (xi.dim == 0)
     return;
   // The facets of xi, named by masks within tau; those containing kept_below go too.
@@ -81,6 +83,23 @@ Retraction::deletePrincipal (Simplex s)
     return false;
   remove (s, fullMask (s.dim), s, fullMask (s.dim));
   return true;
+}
+
+void
+Retraction::rollbackTrial ()
+{
+  for (auto it = trial_.rbegin (); it != trial_.rend (); ++it)
+  {
+    const Simplex xi = *it;
+    alive_[xi.dim][xi.id] = 1;
+    if (!stamps_[xi.dim].empty ())
+      stamps_[xi.dim][xi.id] = 0;
+    for (int i = 0; i <= xi.dim && xi.dim > 0; ++i)
+      ++counts_[xi.dim - 1][complex_.face (xi.dim, xi.id, fullMask (xi.dim) & ~(1u << i)).id];
+  }
+  trial_.clear ();
+  in_trial_ = false;
+  work_.clear ();
 }
 
 void

@@ -39,6 +39,15 @@ public:
     * the next retract() collapses what the deletion freed. Returns whether it was deleted. */
   bool deletePrincipal (Simplex s);
 
+  /** \brief Starts a trial: removals are logged until commitTrial() keeps them or
+    * rollbackTrial() undoes them. */
+  void beginTrial () { trial_.clear (); in_trial_ = true; }
+  /** \brief The simplices removed since beginTrial(), in removal order. */
+  const std::vector<Simplex>& trialRemovals () const { return trial_; }
+  void commitTrial () { trial_.clear (); in_trial_ = false; }
+  /** \brief Puts back everything removed since beginTrial(). */
+  void rollbackTrial ();
+
   /** \brief From now on, every removed simplex remembers \a stamp (> 0): which deletion's
     * retraction removed it. */
   void stampRemovals (std::uint32_t stamp);
@@ -64,6 +73,8 @@ private:
   bool seeded_ = false;
   std::array<std::vector<std::uint32_t>, 4> stamps_;
   std::uint32_t stamp_ = 0;
+  std::vector<Simplex> trial_;
+  bool in_trial_ = false;
 };
 
 } // namespace pcl_wrap::detail

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "front_deletion.h"
+
+#include <array>
+#include <set>
+#include <unordered_map>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+/** Did the trial remove something that was on W just before? In a 3-dimensional complex: a
+  * triangle with fewer than two tetrahedra of X, an edge with no triangle, a vertex with no edge.
+  * A removed simplex's cofaces were removed in the same trial, so counting those per simplex
+  * tells how many it had. In lower dimensions everything is on W. */
+bool
+reachesSurface (const SimplicialComplex& complex, const std::vector<Simplex>& removed)
+{
+  if (complex.dimension () < 3)
+    return !removed.empty ();
+  const auto key = [] (Simplex s) { return (std::uint64_t (s.dim) << 32) | s.id; };
+  std::unordered_map<std::uint64_t, std::uint32_t> cofaces_before;
+  for (const Simplex xi : removed)
+    for (int i = 0; i <= xi.dim && xi.dim > 0; ++i)
+      ++cofaces_before[key (complex.face (xi.dim, xi.id, fullMask (xi.dim) & ~(1u << i)))];
+  for (const Simplex xi : removed)
+  {
+    if (xi.dim == 3)
+      continue;
+    const auto it = cofaces_before.find (key (xi));
+    const std::uint32_t before = it == cofaces_before.end () ? 0 : it->second;
+    if (before < (xi.dim == 2 ? 2u : 1u))
+      return true;
+  }
+  return false;
+}
+
+} // namespace
+
+FrontDeletion
+deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapFiltration& order, double delta,
+                    std::uint64_t order_seed)
+{
+  // The rank of every sink larger than delta, to find those a trial uncovers.
+  constexpr std::uint32_t NOT_CANDIDATE = ~std::uint32_t (0);
+  std::array<std::vector<std::uint32_t>, 4> rank;
+  for (int k = 0; k <= 3; ++k)
+    rank[k].assign (complex.size (k), NOT_CANDIDATE);
+  std::size_t candidates = 0;
+  while (candidates < order.sinks.size () && order.sink_sizes[candidates] > delta)
+  {
+    rank[order.sinks[candidates].dim][order.sinks[candidates].id] = static_cast<std::uint32_t> (candidates);
+    ++candidates;
+  }
+
+  FrontDeletion result;
+  for (bool progress = true; progress;)
+  {
+    progress = false;
+    for (std::size_t j = 0; j < candidates; ++j)
+    {
+      if (!y.inY (order.sinks[j]) || y.cofacesInY (order.sinks[j]) != 0)
+        continue;
+      // A trial deletes the sink, then, while its basin has not reached the surface, the larger-
+      // than-delta sinks it made principal (its cosinks), largest first. All or nothing.
+      y.beginTrial ();
+      std::set<std::uint32_t> pending = {static_cast<std::uint32_t> (j)};
+      std::size_t scanned = 0, deleted = 0;
+      bool reached = false;
+      while (!pending.empty () && !reached)
+      {
+        const Simplex sink = order.sinks[*pending.begin ()];
+        pending.erase (pending.begin ());
+        if (!y.deletePrincipal (sink))
+          continue;
+        ++deleted;
+        y.retract (order_seed);
+        reached = reachesSurface (complex, y.trialRemovals ());
+        for (; scanned < y.trialRemovals ().size (); ++scanned)
+        {
+          const Simplex xi = y.trialRemovals ()[scanned];
+          for (unsigned mask = 1; mask < fullMask (xi.dim); ++mask)
+          {
+            const Simplex f = complex.face (xi.dim, xi.id, mask);
+            if (rank[f.dim][f.id] != NOT_CANDIDATE && y.inY (f) && y.cofacesInY (f) == 0)
+              pending.insert (rank[f.dim][f.id]);
+          }
+        }
+      }
+      if (reached)
+      {
+        y.commitTrial ();
+        result.deleted += deleted;
+        progress = true;
+      }
+      else
+        y.rollbackTrial ();
+    }
+  }
+  for (std::size_t j = 0; j < candidates; ++j)
+    if (y.inY (order.sinks[j]))
+      ++(y.cofacesInY (order.sinks[j]) == 0 ? result.enclosed : result.not_principal);
+  return result;
+}
+
+} // namespace pcl_wrap::detail
