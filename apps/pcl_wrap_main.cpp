@@ -33,6 +33,12 @@ printUsage (std::ostream& out)
          "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts\n"
          "  --stats               print a summary\n"
          "  --stats-json FILE     write the statistics, with timings per stage, as JSON\n"
+         "  --delta D             wrap tighter: delete sinks (empty spheres) of squared radius > D\n"
+         "  --radius R            the same with D = R^2\n"
+         "  --radius-rel K        the same with R = K x the median nearest-neighbour distance\n"
+         "  --mode front|global   front (default): only sinks whose basin reaches the surface, so no\n"
+         "                        cavity is carved; global: every sink above the threshold\n"
+         "  --sinks J             global: delete the J largest sinks\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
          "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
          "  --weight-scale S      multiply every weight by S (default "
@@ -83,6 +89,34 @@ parseOptions (int argc, char** argv)
       o.stats_json = value ();
     else if (arg == "--quiet")
       o.quiet = true;
+    else if (arg == "--delta" || arg == "--radius" || arg == "--radius-rel")
+    {
+      const std::string v = value ();
+      char* end = nullptr;
+      const double x = std::strtod (v.c_str (), &end);
+      if (v.empty () || *end != '\0' || !std::isfinite (x) || (arg != "--delta" && x <= 0))
+        usageError (arg + " takes a finite number" + (arg == "--delta" ? "" : " > 0"));
+      if (arg == "--radius-rel")
+        o.parameters.radius_rel = x;
+      else
+        o.parameters.delta = arg == "--delta" ? x : x * x;
+    }
+    else if (arg == "--mode")
+    {
+      const std::string v = value ();
+      if (v != "front" && v != "global")
+        usageError ("--mode takes front or global");
+      o.parameters.deletion = v == "front" ? SinkDeletion::front : SinkDeletion::global;
+    }
+    else if (arg == "--sinks")
+    {
+      const std::string v = value ();
+      char* end = nullptr;
+      const long long j = std::strtoll (v.c_str (), &end, 10);
+      if (v.empty () || *end != '\0' || j < 1)
+        usageError ("--sinks takes a whole number >= 1");
+      o.parameters.sinks = static_cast<std::size_t> (j);
+    }
     else if (arg == "--weight-field")
       o.parameters.weight_field = value ();
     else if (arg == "--weight-scale")

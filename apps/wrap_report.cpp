@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iomanip>
 #include <vector>
 
@@ -125,6 +126,14 @@ writeStatisticsJson (std::ostream& out, const WrapResult& result)
   out << "},\"x_simplices\":{";
   for (int k = 0; k <= 3; ++k)
     out << (k ? "," : "") << '"' << k << "\":" << s.x_simplices[k];
+  const auto number = [&] (double x) -> std::ostream& {
+    return std::isfinite (x) ? out << x : out << "null"; // JSON has no infinity
+  };
+  out << "},\"deletion\":{\"spacing\":" << s.spacing << ",\"delta\":";
+  number (s.delta) << ",\"largest_sinks\":";
+  writeList (out, s.largest_sinks);
+  out << ",\"sinks\":" << s.sinks << ",\"deleted\":" << s.sinks_deleted << ",\"enclosed\":" << s.sinks_enclosed
+      << ",\"not_principal\":" << s.sinks_not_principal;
   out << "},\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
       << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
       << ",\"isolated_vertices\":" << s.w_isolated_vertices << "},\"timings\":{";
@@ -147,6 +156,14 @@ printSummary (std::ostream& out, const WrapStatistics& s)
       << "sinks:         ";
   for (int k = 0; k <= 3; ++k)
     out << (k ? ", " : "") << s.simplices[k][0] << " centered " << (k == 0 ? "vertices" : k == 1 ? "edges" : k == 2 ? "triangles" : "tetrahedra");
+  if (std::isfinite (s.delta) || s.sinks_deleted > 0)
+  {
+    out << "\ndeletion:      spacing " << s.spacing << ", threshold " << s.delta << " (radius " << std::sqrt (std::max (s.delta, 0.0))
+        << "), " << s.sinks_deleted << " of " << s.sinks << " sinks deleted, " << s.sinks_enclosed << " enclosed, "
+        << s.sinks_not_principal << " not principal; largest sinks";
+    for (double size : s.largest_sinks)
+      out << ' ' << size;
+  }
   out << "\nX:             " << s.x_simplices[0] << " vertices, " << s.x_simplices[1] << " edges, " << s.x_simplices[2]
       << " triangles, " << s.x_simplices[3] << " tetrahedra after " << s.collapses << " collapses\n"
       << "W:             " << s.w_triangles << " triangles, " << s.w_dangling_edges << " dangling edges, "

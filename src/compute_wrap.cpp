@@ -12,6 +12,7 @@
 #include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
 #include "detail/simplicial_complex.h"
+#include "detail/sink_deletion.h"
 #include "detail/stage_clock.h"
 
 #include <tbb/global_control.h>
@@ -162,6 +163,11 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   Retraction x (complex, classification);
   stats.collapses = x.retract ();
   clock.stageDone ("collapse");
+  if (parameters.deletesSinks ())
+  {
+    deleteSinks (complex, classification, vertex_positions, vertex_weights, parameters, x, stats);
+    clock.stageDone ("deletion");
+  }
 
   result.surface = inInputIndices (extractBoundary (complex, x), input_of_vertex);
   stats.w_triangles = result.surface.triangles.size ();

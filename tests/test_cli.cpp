@@ -259,6 +259,27 @@ TEST_F (Cli, WeightsFromXyzColumnOrPcdField)
   EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weight-scale inf").status, 2);
 }
 
+TEST_F (Cli, SinkDeletionOptions)
+{
+  std::ostringstream xyz;
+  xyz.precision (17);
+  for (const auto& p : torusSample (1000, 2))
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  writeText (DIR + "torus1000.xyz", xyz.str ());
+  for (const std::string options : {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3"})
+  {
+    SCOPED_TRACE (options);
+    const CliRun run = runCli (DIR + "torus1000.xyz " + DIR + "opened.ply --stats-json " + DIR + "opened.json " + options);
+    ASSERT_EQ (run.status, 0) << run.err;
+    writeText (DIR + "deleted.py", "import json, sys\n"
+                                   "d = json.load(open(sys.argv[1]))['deletion']\n"
+                                   "assert d['deleted'] >= 1 and d['sinks'] > 0 and d['spacing'] > 0, d\n");
+    EXPECT_EQ (std::system (("python3 " + DIR + "deleted.py " + DIR + "opened.json").c_str ()), 0);
+  }
+  for (const std::string bad : {"--radius -1", "--radius-rel 0", "--mode sideways", "--sinks 0", "--delta x"})
+    EXPECT_EQ (runCli (DIR + "torus1000.xyz " + DIR + "opened.ply " + bad).status, 2) << bad;
+}
+
 TEST_F (Cli, UsageErrors)
 {
   // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.

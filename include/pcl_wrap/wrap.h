@@ -51,6 +51,23 @@ public:
     * \param[in] num_threads the number of threads */
   void setNumberOfThreads (unsigned num_threads) { parameters_.num_threads = num_threads; }
 
+  /** \brief Wrap tighter: delete sinks (empty spheres) of squared radius larger than \a delta.
+    * \param[in] delta the threshold; +inf (default) gives the basic wrap */
+  void setDelta (double delta) { parameters_.delta = delta; }
+  /** \brief Wrap tighter: delete sinks of radius larger than \a radius.
+    * \param[in] radius the threshold radius */
+  void setRadius (double radius) { parameters_.delta = radius * radius; }
+  /** \brief Wrap tighter: delete sinks of radius larger than \a factor times the median
+    * nearest-neighbour distance.
+    * \param[in] factor the factor; 0 (default) uses the delta instead */
+  void setRelativeRadius (double factor) { parameters_.radius_rel = factor; }
+  /** \brief How sinks are deleted: front (default, never carves a cavity) or global.
+    * \param[in] mode the mode */
+  void setSinkDeletion (SinkDeletion mode) { parameters_.deletion = mode; }
+  /** \brief Global deletion of the \a count largest sinks (0: use the threshold).
+    * \param[in] count the number of sinks */
+  void setSinks (std::size_t count) { parameters_.sinks = count; }
+
   /** \brief Weights (squared radii), one per point of the input cloud (not per index); they
     * take precedence over a weight field. Empty: no weights.
     * \param[in] weights the weights */

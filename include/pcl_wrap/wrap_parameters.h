@@ -2,10 +2,21 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace pcl_wrap
 {
+
+/** \brief How sinks (large empty spheres, ALGORITHM.md §6) are deleted after the basic
+  * construction to wrap tighter and open tunnels. */
+enum class SinkDeletion : std::uint8_t
+{
+  front, ///< sinks larger than the threshold whose basin reaches the surface: never a cavity
+  global ///< every sink larger than the threshold (or the J largest): may carve cavities
+};
 
 /** \brief Every tunable of the Wrap construction, with its default written once here.
   *
@@ -25,6 +36,22 @@ struct WrapParameters
   /** \brief Every weight is multiplied by this before use. A weight is a squared radius: the
     * power distance from point p is |x - p|^2 - w_p. */
   double weight_scale = 1.0;
+
+  /** \brief Which sinks to delete (see SinkDeletion); nothing is deleted unless a threshold or a
+    * number of sinks is given. */
+  SinkDeletion deletion = SinkDeletion::front;
+  /** \brief Delete sinks whose size (squared radius of their empty sphere) exceeds this; +inf:
+    * the basic wrap. */
+  double delta = std::numeric_limits<double>::infinity ();
+  /** \brief If > 0, the threshold is (radius_rel * spacing)^2 instead, with spacing the median
+    * nearest-neighbour distance of the points. */
+  double radius_rel = 0.0;
+  /** \brief Global deletion: if > 0, delete the this many largest sinks instead (omega is always
+    * deleted and not counted). */
+  std::size_t sinks = 0;
+
+  /** \brief Is any sink deletion asked for? */
+  bool deletesSinks () const { return delta < std::numeric_limits<double>::infinity () || radius_rel > 0 || sinks > 0; }
 
   /** \brief The point field that holds the weights (e.g. "intensity" or "curvature"), read by
     * the PCL class, the command-line tool and the ROS node; empty: no weights (all 0). */

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -75,6 +76,16 @@ struct WrapStatistics
   std::array<std::size_t, 4> x_simplices{};
   std::size_t collapses = 0;        ///< collapses performed by the retraction
   std::size_t perturbations = 0;    ///< predicate ties decided by the symbolic perturbation
+
+  /** \brief Sink deletion (when asked for): the median nearest-neighbour distance, the
+    * threshold used (a squared radius), the largest sink sizes, and what was deleted. */
+  double spacing = 0.0;
+  double delta = std::numeric_limits<double>::infinity ();
+  std::vector<double> largest_sinks;
+  std::size_t sinks = 0;              ///< sinks other than omega
+  std::size_t sinks_deleted = 0;
+  std::size_t sinks_enclosed = 0;     ///< front: larger than delta, basin inside the solid
+  std::size_t sinks_not_principal = 0; ///< larger than delta, present, never principal
 
   std::size_t w_triangles = 0;
   std::size_t w_dangling_edges = 0;

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_filtration.h"
 
+#include "sink_deletion.h"
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
@@ -84,20 +86,9 @@ wrapFiltration (const SimplicialComplex& complex, const Classification& classifi
   Retraction y (complex, classification);
   y.stampRemovals (1);
   y.retract (order_seed);
-  for (std::size_t j = 0; j < f.sinks.size (); ++j)
-  {
-    const Simplex sink = f.sinks[j];
-    if (!y.inY (sink))
-      continue; // an earlier retraction took it
-    y.stampRemovals (static_cast<std::uint32_t> (j + 2));
-    if (!y.deletePrincipal (sink))
-    {
-      ++f.not_principal;
-      continue;
-    }
-    ++f.deletions;
-    y.retract (order_seed);
-  }
+  f.not_principal = deleteSinksGlobally (
+      y, f, [] (std::size_t, double) { return true; },
+      [&] (std::size_t j) { y.stampRemovals (static_cast<std::uint32_t> (j + 2)); }, f.deletions, order_seed);
   constexpr double INF = std::numeric_limits<double>::infinity ();
   for (int k = 0; k <= 3; ++k)
   {

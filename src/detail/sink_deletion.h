@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "classification.h"
+#include "retraction.h"
+#include "simplicial_complex.h"
+#include "wrap_filtration.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <cstddef>
+#include <limits>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Global deletion (ALGORITHM.md §6): the sinks of \a order in turn, while \a keep_going
+  * (rank, size) says so, each still-present one deleted if principal and followed by a
+  * retraction; \a before (rank) is called before each deletion. Returns how many were present but
+  * not principal. */
+template <class KeepGoing, class Before>
+std::size_t
+deleteSinksGlobally (Retraction& y, const WrapFiltration& order, const KeepGoing& keep_going, const Before& before,
+                     std::size_t& deleted, std::uint64_t order_seed = 0)
+{
+  std::size_t not_principal = 0;
+  for (std::size_t j = 0; j < order.sinks.size () && keep_going (j, order.sink_sizes[j]); ++j)
+  {
+    if (!y.inY (order.sinks[j]))
+      continue; // an earlier retraction took it
+    before (j);
+    if (!y.deletePrincipal (order.sinks[j]))
+    {
+      ++not_principal;
+      continue;
+    }
+    ++deleted;
+    y.retract (order_seed);
+  }
+  return not_principal;
+}
+
+/** \brief The median distance from a point to its nearest neighbour (PCL's FLANN k-d tree). */
+double
+medianSpacing (const std::vector<Point3>& positions);
+
+/** \brief After the basic retraction of \a y: the sink deletion \a parameters ask for, with its
+  * numbers in \a stats. */
+void
+deleteSinks (const SimplicialComplex& complex, const Classification& classification,
+             const std::vector<Point3>& positions, const std::vector<double>& weights,
+             const WrapParameters& parameters, Retraction& y, WrapStatistics& stats);
+
+} // namespace pcl_wrap::detail
