@@ -245,7 +245,9 @@ checkPcdHeader (const std::string& path)
     std::vector<std::string> tokens;
     for (std::string word; words >> word;)
       tokens.push_back (word);
-    if (tokens.empty () || tokens[0][0] == '#')
+    if (tokens.empty ())
+      bad ("blank line in the header"); // PCL's reader crashes on one (found by fuzzing)
+    if (tokens[0][0] == '#')
       continue;
     lines.push_back (tokens);
     if (tokens[0] == "DATA")

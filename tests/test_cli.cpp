@@ -185,6 +185,7 @@ malformedFiles ()
       {"empty.pcd", ""},
       {"junk.pcd", junk},
       {"truncated.pcd", pcd + "0 0 0\n"},
+      {"blank_header_line.pcd", "\n \n# .PCD v0.7\n" + pcd + "0 0 0\n1 0 0\n0 1 0\n"},
       {"garbage.pcd", pcd + "0 0 0\n1 x 0\n0 1 0\n"},
       {"fields.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 0\n"},
       {"count.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 5\nDATA ascii\n"},
