@@ -101,7 +101,7 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
       continue;
     for (int i = 0; i < 4; ++i)
     {
-      const Simplex f = complex.face (3, t, fullMask (3) & ~(1u << i));
+      const Simplex f = complex.facet (3, t, i);
       if (x.cofacesInY (f) == 1)
       {
         const std::uint32_t* v = complex.vertices (3, t);

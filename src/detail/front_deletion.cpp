@@ -11,31 +11,45 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** Did the trial remove something that was on W just before? In a 3-dimensional complex: a
-  * triangle with fewer than two tetrahedra of X, an edge with no triangle, a vertex with no edge.
-  * A removed simplex's cofaces were removed in the same trial, so counting those per simplex
-  * tells how many it had. In lower dimensions everything is on W. */
-bool
-reachesSurface (const SimplicialComplex& complex, const std::vector<Simplex>& removed)
+/** Watches a trial's removals for one that was on W just before the trial: in a 3-dimensional
+  * complex, a triangle with fewer than two tetrahedra of X, an edge with no triangle, a vertex
+  * with no edge (in lower dimensions everything is on W). A removed simplex's cofaces leave in
+  * the same step or earlier (Y stays a complex), so counting them among the removals tells how
+  * many it had, and once a step is over only the new removals need a look. */
+class SurfaceWatch
 {
-  if (complex.dimension () < 3)
-    return !removed.empty ();
-  const auto key = [] (Simplex s) { return (std::uint64_t (s.dim) << 32) | s.id; };
-  std::unordered_map<std::uint64_t, std::uint32_t> cofaces_before;
-  for (const Simplex xi : removed)
-    for (int i = 0; i <= xi.dim && xi.dim > 0; ++i)
-      ++cofaces_before[key (complex.face (xi.dim, xi.id, fullMask (xi.dim) & ~(1u << i)))];
-  for (const Simplex xi : removed)
+public:
+  explicit SurfaceWatch (const SimplicialComplex& complex) : complex_ (complex) {}
+
+  /** Looks at the removals it has not seen; true when one of them was on W. */
+  bool reached (const std::vector<Simplex>& removed)
   {
-    if (xi.dim == 3)
-      continue;
-    const auto it = cofaces_before.find (key (xi));
-    const std::uint32_t before = it == cofaces_before.end () ? 0 : it->second;
-    if (before < (xi.dim == 2 ? 2u : 1u))
-      return true;
+    if (complex_.dimension () < 3)
+      return !removed.empty ();
+    const std::size_t first = seen_;
+    for (; seen_ < removed.size (); ++seen_)
+      for (int i = 0; i <= removed[seen_].dim && removed[seen_].dim > 0; ++i)
+        ++cofaces_before_[key (complex_.facet (removed[seen_].dim, removed[seen_].id, i))];
+    for (std::size_t k = first; k < removed.size (); ++k)
+    {
+      const Simplex xi = removed[k];
+      if (xi.dim == 3)
+        continue;
+      const auto it = cofaces_before_.find (key (xi));
+      const std::uint32_t before = it == cofaces_before_.end () ? 0 : it->second;
+      if (before < (xi.dim == 2 ? 2u : 1u))
+        return true;
+    }
+    return false;
   }
-  return false;
-}
+
+private:
+  static std::uint64_t key (Simplex s) { return (std::uint64_t (s.dim) << 32) | s.id; }
+
+  const SimplicialComplex& complex_;
+  std::unordered_map<std::uint64_t, std::uint32_t> cofaces_before_;
+  std::size_t seen_ = 0;
+};
 
 } // namespace
 
@@ -67,6 +81,7 @@ deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapF
       // than-delta sinks it made principal (its cosinks), largest first. All or nothing.
       y.beginTrial ();
       std::set<std::uint32_t> pending = {static_cast<std::uint32_t> (j)};
+      SurfaceWatch surface (complex);
       std::size_t scanned = 0, deleted = 0;
       bool reached = false;
       while (!pending.empty () && !reached)
@@ -77,7 +92,7 @@ deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapF
           continue;
         ++deleted;
         y.retract (order_seed);
-        reached = reachesSurface (complex, y.trialRemovals ());
+        reached = surface.reached (y.trialRemovals ());
         for (; scanned < y.trialRemovals ().size (); ++scanned)
         {
           const Simplex xi = y.trialRemovals ()[scanned];

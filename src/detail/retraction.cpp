@@ -11,25 +11,26 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
 {
   for (int k = 0; k <= 3; ++k)
     alive_[k].assign (complex.size (k), 1);
-  for (int k = 0; k < 3; ++k)
-    counts_[k].assign (complex.size (k), 0);
-  for (int m = 1; m <= complex.dimension (); ++m)
-    for (SimplexId s = 0; s < complex.size (m); ++s)
-      for (int i = 0; i <= m; ++i)
-        ++counts_[m - 1][complex.face (m, s, fullMask (m) & ~(1u << i)).id];
+  countCofaces ();
 }
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
                         const std::array<std::vector<std::uint8_t>, 4>& in_y)
   : complex_ (complex), classification_ (classification), alive_ (in_y)
 {
+  countCofaces ();
+}
+
+void
+Retraction::countCofaces ()
+{
   for (int k = 0; k < 3; ++k)
-    counts_[k].assign (complex.size (k), 0);
-  for (int m = 1; m <= complex.dimension (); ++m)
-    for (SimplexId s = 0; s < complex.size (m); ++s)
+    counts_[k].assign (complex_.size (k), 0);
+  for (int m = 1; m <= complex_.dimension (); ++m)
+    for (SimplexId s = 0; s < complex_.size (m); ++s)
       if (alive_[m][s])
         for (int i = 0; i <= m; ++i)
-          ++counts_[m - 1][complex.face (m, s, fullMask (m) & ~(1u << i)).id];
+          ++counts_[m - 1][complex_.facet (m, s, i).id];
 }
 
 bool
@@ -95,7 +96,7 @@ Retraction::rollbackTrial ()
     if (!stamps_[xi.dim].empty ())
       stamps_[xi.dim][xi.id] = 0;
     for (int i = 0; i <= xi.dim && xi.dim > 0; ++i)
-      ++counts_[xi.dim - 1][complex_.face (xi.dim, xi.id, fullMask (xi.dim) & ~(1u << i)).id];
+      ++counts_[xi.dim - 1][complex_.facet (xi.dim, xi.id, i).id];
   }
   trial_.clear ();
   in_trial_ = false;

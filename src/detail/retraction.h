@@ -62,6 +62,8 @@ public:
 private:
   bool collapsible (Simplex v) const;
   void collapse (Simplex v, Simplex tau);
+  /** Counts every simplex of Y in its facets' coface counts. */
+  void countCofaces ();
   /** Takes \a xi out of Y, tells its facets, and queues the facets that stay. */
   void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below);
 

@@ -49,6 +49,8 @@ public:
 
   /** \brief The face of simplex (k, s) spanned by the local vertices in \a mask (non-empty). */
   Simplex face (int k, SimplexId s, unsigned mask) const;
+  /** \brief The facet of simplex (k, s), k >= 1, opposite its local vertex \a i. */
+  Simplex facet (int k, SimplexId s, int i) const;
 
 private:
   int dimension_ = -1;
@@ -70,6 +72,12 @@ inline unsigned
 fullMask (int k)
 {
   return (1u << (k + 1)) - 1u;
+}
+
+inline Simplex
+SimplicialComplex::facet (int k, SimplexId s, int i) const
+{
+  return face (k, s, fullMask (k) & ~(1u << i));
 }
 
 } // namespace pcl_wrap::detail

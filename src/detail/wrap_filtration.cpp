@@ -7,6 +7,8 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <numeric>
 
 namespace pcl_wrap::detail
@@ -52,11 +54,14 @@ orderSinks (const SimplicialComplex& complex, const Classification& classificati
         sizes.push_back (exactSize (complex, {k, s}, points));
       }
   // Equal sizes: the sorted vertex coordinates decide, so the order depends on the points only.
+  // Unused slots hold -inf: a shorter tuple compares as a prefix does, with no allocation.
   const auto coordinates = [&] (std::size_t i) {
-    std::vector<Point3> c;
+    constexpr double LOW = -std::numeric_limits<double>::infinity ();
+    std::array<Point3, 4> c;
+    c.fill ({LOW, LOW, LOW});
     for (int j = 0; j <= sinks[i].dim; ++j)
-      c.push_back (positions[complex.vertex (sinks[i].dim, sinks[i].id, j)]);
-    std::sort (c.begin (), c.end ());
+      c[j] = positions[complex.vertex (sinks[i].dim, sinks[i].id, j)];
+    std::sort (c.begin (), c.begin () + sinks[i].dim + 1);
     return c;
   };
   std::vector<std::size_t> order (sinks.size ());
