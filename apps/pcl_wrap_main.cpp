@@ -8,6 +8,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -39,6 +40,9 @@ printUsage (std::ostream& out)
          "  --mode front|global   front (default): only sinks whose basin reaches the surface, so no\n"
          "                        cavity is carved; global: every sink above the threshold\n"
          "  --sinks J             global: delete the J largest sinks\n"
+         "  --region sphere:x,y,z,r | box:x0,y0,z0,x1,y1,z1\n"
+         "                        local modification: front deletion with the threshold above starts\n"
+         "                        only from the surface inside this region\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
          "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
          "  --weight-scale S      multiply every weight by S (default "
@@ -57,6 +61,29 @@ struct Options
   bool stats = false, quiet = false;
   WrapParameters parameters;
 };
+
+/** "sphere:x,y,z,r" or "box:x0,y0,z0,x1,y1,z1"; false when it is neither. */
+bool
+parseRegion (const std::string& spec, Region& region)
+{
+  const std::size_t colon = spec.find (':');
+  const std::string shape = spec.substr (0, colon);
+  const std::size_t count = shape == "sphere" ? 4 : shape == "box" ? 6 : 0;
+  if (count == 0 || colon == std::string::npos)
+    return false;
+  std::array<double, 6> v{};
+  const char* p = spec.c_str () + colon + 1;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    char* end = nullptr;
+    v[i] = std::strtod (p, &end);
+    if (end == p || !std::isfinite (v[i]) || *end != (i + 1 < count ? ',' : '\0'))
+      return false;
+    p = end + (i + 1 < count);
+  }
+  region = count == 4 ? Region::sphere (v[0], v[1], v[2], v[3]) : Region::box (v[0], v[1], v[2], v[3], v[4], v[5]);
+  return count == 4 ? v[3] >= 0 : v[0] <= v[3] && v[1] <= v[4] && v[2] <= v[5];
+}
 
 /** Parses the command line; exits with 2 (usage) or 0 (--help). */
 Options
@@ -117,6 +144,11 @@ parseOptions (int argc, char** argv)
         usageError ("--sinks takes a whole number >= 1");
       o.parameters.sinks = static_cast<std::size_t> (j);
     }
+    else if (arg == "--region")
+    {
+      if (!parseRegion (value (), o.parameters.region))
+        usageError ("--region takes sphere:x,y,z,r (r >= 0) or box:x0,y0,z0,x1,y1,z1 (lowest corner first)");
+    }
     else if (arg == "--weight-field")
       o.parameters.weight_field = value ();
     else if (arg == "--weight-scale")
@@ -146,6 +178,9 @@ parseOptions (int argc, char** argv)
     usageError ("expected INPUT and OUTPUT");
   o.input = positional[0];
   o.output = positional[1];
+  if (o.parameters.region.shape != Region::Shape::everywhere &&
+      (o.parameters.deletion != SinkDeletion::front || o.parameters.sinks > 0 || !o.parameters.deletesSinks ()))
+    usageError ("--region needs a threshold (--delta, --radius or --radius-rel) and front mode");
   if (!apps::isMeshFormat (o.output))
     usageError (o.output + ": unknown output format (expected .ply, .obj or .vtk)");
   return o;

@@ -19,6 +19,7 @@
 #include <tbb/info.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -92,6 +93,34 @@ inInputIndices (const SimplicialComplex& complex, const Classification& classifi
   return lists;
 }
 
+/** Rejects parameters that have no meaning, before any work. */
+void
+checkParameters (const WrapParameters& p)
+{
+  const auto fail = [] (const std::string& what) { throw std::invalid_argument ("computeWrap: " + what); };
+  if (std::isnan (p.delta))
+    fail ("delta is NaN");
+  if (!(p.radius_rel >= 0) || !std::isfinite (p.radius_rel))
+    fail ("radius_rel must be finite and >= 0");
+  if (!std::isfinite (p.weight_scale))
+    fail ("weight_scale must be finite");
+  const Region& r = p.region;
+  if (r.shape == Region::Shape::everywhere)
+    return;
+  for (double v : r.values)
+    if (!std::isfinite (v))
+      fail ("region coordinates must be finite");
+  if (r.shape == Region::Shape::sphere && r.values[3] < 0)
+    fail ("region sphere radius must be >= 0");
+  if (r.shape == Region::Shape::box && !(r.values[0] <= r.values[3] && r.values[1] <= r.values[4] &&
+                                         r.values[2] <= r.values[5]))
+    fail ("region box corners must be lowest then highest");
+  if (p.deletion != SinkDeletion::front || p.sinks > 0)
+    fail ("a region (local modification) works with front deletion only");
+  if (!p.deletesSinks ())
+    fail ("a region (local modification) needs a threshold (delta or radius_rel)");
+}
+
 } // namespace
 
 WrapResult
@@ -104,6 +133,7 @@ WrapResult
 computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights, const WrapParameters& parameters,
              const StageObserver& observer)
 {
+  checkParameters (parameters);
   if (!weights.empty () && weights.size () != points.size ())
     throw std::invalid_argument ("computeWrap: " + std::to_string (weights.size ()) + " weights for " +
                                  std::to_string (points.size ()) + " points");

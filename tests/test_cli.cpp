@@ -267,7 +267,8 @@ TEST_F (Cli, SinkDeletionOptions)
   for (const auto& p : torusSample (1000, 2))
     xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   writeText (DIR + "torus1000.xyz", xyz.str ());
-  for (const std::string options : {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3"})
+  for (const std::string options : {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3",
+                                   "--delta 0.2 --region sphere:0,0,0,0.7", "--delta 0.2 --region box:-.7,-.7,-.5,.7,.7,.5"})
   {
     SCOPED_TRACE (options);
     const CliRun run = runCli (DIR + "torus1000.xyz " + DIR + "opened.ply --stats-json " + DIR + "opened.json " + options);
@@ -277,7 +278,11 @@ TEST_F (Cli, SinkDeletionOptions)
                                    "assert d['deleted'] >= 1 and d['sinks'] > 0 and d['spacing'] > 0, d\n");
     EXPECT_EQ (std::system (("python3 " + DIR + "deleted.py " + DIR + "opened.json").c_str ()), 0);
   }
-  for (const std::string bad : {"--radius -1", "--radius-rel 0", "--mode sideways", "--sinks 0", "--delta x"})
+  for (const std::string bad : {"--radius -1", "--radius-rel 0", "--mode sideways", "--sinks 0", "--delta x",
+                                "--delta 1 --region sphere:0,0,0", "--delta 1 --region box:1,0,0,0,1,1",
+                                "--delta 1 --region cube:0,0,0,1", "--delta 1 --region sphere:0,0,nan,1",
+                                "--delta 1 --region sphere:0,0,0,1,", "--region sphere:0,0,0,1",
+                                "--delta 1 --mode global --region sphere:0,0,0,1"})
     EXPECT_EQ (runCli (DIR + "torus1000.xyz " + DIR + "opened.ply " + bad).status, 2) << bad;
 }
 

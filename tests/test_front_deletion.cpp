@@ -6,6 +6,7 @@
 #include "support/pipeline.h"
 #include "support/samplers.h"
 #include "support/topology.h"
+#include "support/wrap_checks.h"
 
 #include "detail/front_deletion.h"
 #include "detail/wrap_filtration.h"
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 #include <memory>
 #include <numeric>
 
@@ -38,7 +40,7 @@ frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0)
   detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);
   Wrapped w{std::make_unique<Retraction> (p.complex, p.classification), {}};
   w.y->retract (order_seed);
-  w.deletion = detail::deleteExposedSinks (p.complex, *w.y, order, delta, order_seed);
+  w.deletion = detail::deleteExposedSinks (p.complex, *w.y, order, delta, {}, order_seed);
   return w;
 }
 
@@ -159,6 +161,88 @@ TEST (FrontDeletion, IndependentOfTheOrderOfCollapses)
       for (SimplexId s = 0; s < p.complex.size (k); ++s)
         ASSERT_EQ (w.y->inY ({k, s}), reference.y->inY ({k, s}));
   }
+}
+
+/** Triangles of W (as vertex sets) whose points all satisfy \a keep. */
+std::set<std::set<PointIndex>>
+trianglesWhere (const WrapResult& r, const std::vector<Point3>& points, bool (*keep) (const Point3&))
+{
+  std::set<std::set<PointIndex>> out;
+  for (const auto& t : r.surface.triangles)
+    if (keep (points[t[0]]) && keep (points[t[1]]) && keep (points[t[2]]))
+      out.insert ({t[0], t[1], t[2]});
+  return out;
+}
+
+/** Local modification (§8): on a surface with two tunnels, front deletion from the part of W
+  * around one tunnel opens that one only, and W away from it stays the basic wrap's, sealed
+  * tunnel and its pinch edges included; from all of W, both open. */
+TEST (FrontDeletion, ARegionOpensOnlyTheTunnelItHolds)
+{
+  for (unsigned seed = 1; seed <= 3; ++seed)
+  {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const auto points = doubleTorusSample (2400, seed);
+    const Point3 left_bottom{-1.1, 0, -0.4}, left_top{-1.1, 0, 0.4}, right_bottom{1.1, 0, -0.4},
+        right_top{1.1, 0, 0.4};
+    const auto expectClosedAndWhole = [&] (const WrapResult& r) {
+      EXPECT_EQ (openEdgeOfW (r), "");
+      EXPECT_EQ (describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()}).components, 1u);
+      // Sinks outside the region stay, principal or behind larger ones: no count to check.
+    };
+    const WrapResult basic = computeWrap (points);
+
+    WrapParameters parameters;
+    parameters.delta = 0.2; // between the tubes' sinks (< 0.4^2) and the holes' (about 0.6^2)
+    const WrapResult both = computeWrap (points, parameters);
+    const SurfaceReport s = describeSurface ({both.surface.triangles.begin (), both.surface.triangles.end ()});
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_TRUE (s.consistently_oriented);
+    EXPECT_EQ (s.components, 1u);
+    EXPECT_EQ (s.euler, -2) << "genus 2";
+    EXPECT_EQ (s.vertices, points.size ());
+
+    parameters.region = Region::sphere (-1.1, 0, 0, 0.75);
+    const WrapResult left = computeWrap (points, parameters);
+    expectClosedAndWhole (left);
+    EXPECT_GT (left.statistics.sinks_deleted, 0u);
+    EXPECT_FALSE (xMeetsSegment (left, points, left_bottom, left_top)) << "the chosen tunnel opened";
+    EXPECT_TRUE (xMeetsSegment (left, points, right_bottom, right_top)) << "the other tunnel stays sealed";
+    const auto right_side = [] (const Point3& q) { return q[0] > 0.4; };
+    EXPECT_EQ (trianglesWhere (left, points, right_side), trianglesWhere (basic, points, right_side));
+
+    parameters.region = Region::box (0.4, -0.7, -0.5, 1.8, 0.7, 0.5);
+    const WrapResult right = computeWrap (points, parameters);
+    expectClosedAndWhole (right);
+    EXPECT_TRUE (xMeetsSegment (right, points, left_bottom, left_top));
+    EXPECT_FALSE (xMeetsSegment (right, points, right_bottom, right_top));
+    const auto left_side = [] (const Point3& q) { return q[0] < -0.4; };
+    EXPECT_EQ (trianglesWhere (right, points, left_side), trianglesWhere (basic, points, left_side));
+  }
+}
+
+/** A region away from any tunnel, or an empty one, changes nothing beyond the basic wrap's
+  * surface there; a region needs front mode and a threshold. */
+TEST (FrontDeletion, RegionParametersAreChecked)
+{
+  const auto points = doubleTorusSample (800, 1);
+  WrapParameters parameters;
+  parameters.region = Region::sphere (0, 0, 0, 1);
+  EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "no threshold";
+  parameters.delta = 0.2;
+  parameters.deletion = SinkDeletion::global;
+  EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "global mode";
+  parameters.deletion = SinkDeletion::front;
+  parameters.region = Region::box (1, 0, 0, 0, 1, 1);
+  EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "corners swapped";
+  parameters.region = Region::sphere (0, 0, std::nan (""), 1);
+  EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "NaN centre";
+
+  // A region holding no point: nothing is deleted, the basic wrap comes back.
+  parameters.region = Region::sphere (10, 10, 10, 1);
+  const WrapResult r = computeWrap (points, parameters);
+  EXPECT_EQ (r.statistics.sinks_deleted, 0u);
+  EXPECT_EQ (r.surface.triangles.size (), computeWrap (points).surface.triangles.size ());
 }
 
 } // namespace

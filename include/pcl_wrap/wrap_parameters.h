@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -16,6 +17,40 @@ enum class SinkDeletion : std::uint8_t
 {
   front, ///< sinks larger than the threshold whose basin reaches the surface: never a cavity
   global ///< every sink larger than the threshold (or the J largest): may carve cavities
+};
+
+/** \brief A closed region of space (a ball or an axis-aligned box) for local modification. */
+struct Region
+{
+  enum class Shape : std::uint8_t
+  {
+    everywhere, ///< no restriction
+    sphere,     ///< values: centre x, y, z and radius
+    box         ///< values: lowest corner x, y, z, then highest corner x, y, z
+  };
+  Shape shape = Shape::everywhere;
+  std::array<double, 6> values{};
+
+  static Region sphere (double x, double y, double z, double r) { return {Shape::sphere, {x, y, z, r, 0, 0}}; }
+  static Region box (double x0, double y0, double z0, double x1, double y1, double z1)
+  {
+    return {Shape::box, {x0, y0, z0, x1, y1, z1}};
+  }
+
+  /** \brief Is the point (x, y, z) in the region (boundary included)? */
+  bool contains (const std::array<double, 3>& p) const
+  {
+    const auto& v = values;
+    switch (shape)
+    {
+    case Shape::sphere:
+      return (p[0] - v[0]) * (p[0] - v[0]) + (p[1] - v[1]) * (p[1] - v[1]) + (p[2] - v[2]) * (p[2] - v[2]) <=
+             v[3] * v[3];
+    case Shape::box:
+      return v[0] <= p[0] && p[0] <= v[3] && v[1] <= p[1] && p[1] <= v[4] && v[2] <= p[2] && p[2] <= v[5];
+    default: return true;
+    }
+  }
 };
 
 /** \brief Every tunable of the Wrap construction, with its default written once here.
@@ -49,6 +84,12 @@ struct WrapParameters
   /** \brief Global deletion: if > 0, delete the this many largest sinks instead (omega is always
     * deleted and not counted). */
   std::size_t sinks = 0;
+
+  /** \brief Local modification (§8): front deletion starts only from the part of W inside this
+    * region (its simplices whose vertices all lie in it), with the threshold above; the rest of
+    * the surface changes only where a basin reaching into the region also reaches it. Front mode
+    * only. */
+  Region region;
 
   /** \brief Is any sink deletion asked for? */
   bool deletesSinks () const { return delta < std::numeric_limits<double>::infinity () || radius_rel > 0 || sinks > 0; }

@@ -84,8 +84,11 @@ struct WrapStatistics
   std::vector<double> largest_sinks;
   std::size_t sinks = 0;              ///< sinks other than omega
   std::size_t sinks_deleted = 0;
-  std::size_t sinks_enclosed = 0;     ///< front: larger than delta, basin inside the solid
-  std::size_t sinks_not_principal = 0; ///< larger than delta, present, never principal
+  std::size_t sinks_enclosed = 0;     ///< front: larger than delta, principal, basin kept inside
+  /** \brief Larger than delta, present, never principal. Global mode: the theory says none.
+    * Front mode: none on the whole surface either; with a region, the sinks outside it stay
+    * whether principal or not. */
+  std::size_t sinks_not_principal = 0;
 
   std::size_t w_triangles = 0;
   std::size_t w_dangling_edges = 0;

@@ -11,7 +11,8 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** Watches a trial's removals for one that was on W just before the trial: in a 3-dimensional
+/** Watches a trial's removals for one that was on the front (W, or the part of it on flagged
+  * vertices) just before the trial: in a 3-dimensional
   * complex, a triangle with fewer than two tetrahedra of X, an edge with no triangle, a vertex
   * with no edge (in lower dimensions everything is on W). A removed simplex's cofaces leave in
   * the same step or earlier (Y stays a complex), so counting them among the removals tells how
@@ -19,13 +20,20 @@ namespace
 class SurfaceWatch
 {
 public:
-  explicit SurfaceWatch (const SimplicialComplex& complex) : complex_ (complex) {}
+  SurfaceWatch (const SimplicialComplex& complex, const std::vector<std::uint8_t>& in_front)
+    : complex_ (complex), in_front_ (in_front)
+  {}
 
-  /** Looks at the removals it has not seen; true when one of them was on W. */
+  /** Looks at the removals it has not seen; true when one of them was on the front. */
   bool reached (const std::vector<Simplex>& removed)
   {
     if (complex_.dimension () < 3)
-      return !removed.empty ();
+    {
+      for (; seen_ < removed.size (); ++seen_)
+        if (inRegion (removed[seen_]))
+          return true;
+      return false;
+    }
     const std::size_t first = seen_;
     for (; seen_ < removed.size (); ++seen_)
       for (int i = 0; i <= removed[seen_].dim && removed[seen_].dim > 0; ++i)
@@ -33,7 +41,7 @@ public:
     for (std::size_t k = first; k < removed.size (); ++k)
     {
       const Simplex xi = removed[k];
-      if (xi.dim == 3)
+      if (xi.dim == 3 || !inRegion (xi))
         continue;
       const auto it = cofaces_before_.find (key (xi));
       const std::uint32_t before = it == cofaces_before_.end () ? 0 : it->second;
@@ -44,9 +52,20 @@ public:
   }
 
 private:
+  bool inRegion (Simplex s) const
+  {
+    if (in_front_.empty ())
+      return true;
+    for (int i = 0; i <= s.dim; ++i)
+      if (!in_front_[complex_.vertex (s.dim, s.id, i)])
+        return false;
+    return true;
+  }
+
   static std::uint64_t key (Simplex s) { return (std::uint64_t (s.dim) << 32) | s.id; }
 
   const SimplicialComplex& complex_;
+  const std::vector<std::uint8_t>& in_front_;
   std::unordered_map<std::uint64_t, std::uint32_t> cofaces_before_;
   std::size_t seen_ = 0;
 };
@@ -55,7 +74,7 @@ private:
 
 FrontDeletion
 deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapFiltration& order, double delta,
-                    std::uint64_t order_seed)
+                    const std::vector<std::uint8_t>& in_front, std::uint64_t order_seed)
 {
   // The rank of every sink larger than delta, to find those a trial uncovers.
   constexpr std::uint32_t NOT_CANDIDATE = ~std::uint32_t (0);
@@ -81,7 +100,7 @@ deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapF
       // than-delta sinks it made principal (its cosinks), largest first. All or nothing.
       y.beginTrial ();
       std::set<std::uint32_t> pending = {static_cast<std::uint32_t> (j)};
-      SurfaceWatch surface (complex);
+      SurfaceWatch surface (complex, in_front);
       std::size_t scanned = 0, deleted = 0;
       bool reached = false;
       while (!pending.empty () && !reached)

@@ -27,9 +27,11 @@ struct FrontDeletion
   * cosinks, §8), which are deleted with it; if even together they stay inside the solid, all of
   * it is undone.
   * \param[in] order the sinks by decreasing size, from orderSinks()
+  * \param[in] in_front local modification (§8): one flag per vertex; only simplices of W whose
+  *            vertices are all flagged are the front a basin must reach. Empty: all of W.
   * \param[in] order_seed as for Retraction::retract */
 FrontDeletion
 deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapFiltration& order, double delta,
-                    std::uint64_t order_seed = 0);
+                    const std::vector<std::uint8_t>& in_front = {}, std::uint64_t order_seed = 0);
 
 } // namespace pcl_wrap::detail

@@ -58,7 +58,11 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
   }
   else
   {
-    const FrontDeletion front = deleteExposedSinks (complex, y, order, stats.delta);
+    std::vector<std::uint8_t> in_front;
+    if (parameters.region.shape != Region::Shape::everywhere)
+      for (const Point3& p : positions)
+        in_front.push_back (parameters.region.contains (p));
+    const FrontDeletion front = deleteExposedSinks (complex, y, order, stats.delta, in_front);
     stats.sinks_deleted = front.deleted;
     stats.sinks_enclosed = front.enclosed;
     stats.sinks_not_principal = front.not_principal;

@@ -56,6 +56,28 @@ torusSample (std::size_t n, unsigned seed, double major = 1.0, double minor = 0.
   return p;
 }
 
+/** A surface of genus 2: two tori (radii 1 and 0.4, around z-axes through (-1.1, 0, 0) and
+  * (1.1, 0, 0)) fused where they overlap, each torus's points inside the other's solid dropped.
+  * The two tunnels' axes are x = -1.1 and x = 1.1. */
+inline std::vector<Point3>
+doubleTorusSample (std::size_t n, unsigned seed)
+{
+  constexpr double CENTRE = 1.1, MAJOR = 1.0, MINOR = 0.4;
+  const auto insideSolid = [] (const Point3& q, double cx) {
+    const double ring = std::hypot (q[0] - cx, q[1]) - MAJOR;
+    return ring * ring + q[2] * q[2] < MINOR * MINOR;
+  };
+  std::vector<Point3> points;
+  for (const double cx : {-CENTRE, CENTRE})
+    for (Point3 q : torusSample (n / 2, seed + (cx > 0), MAJOR, MINOR))
+    {
+      q[0] += cx;
+      if (!insideSolid (q, -cx))
+        points.push_back (q);
+    }
+  return points;
+}
+
 /** Points (t, t^2, t^3) for sorted random t in [0, 1]: point i is the i-th along the curve. */
 inline std::vector<Point3>
 momentCurveSample (std::size_t n, unsigned seed)

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_checks.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -170,6 +172,25 @@ expectWrapInvariants (const WrapResult& r)
   EXPECT_EQ (h.betti1, 0u);
   EXPECT_EQ (closureOfW (r.surface), boundaryByLinks (r));
   EXPECT_EQ (openEdgeOfW (r), "") << "W is open there";
+}
+
+bool
+xMeetsSegment (const WrapResult& r, const std::vector<Point3>& points, const Point3& a, const Point3& b)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto point = [&] (PointIndex i) { return K::Point_3 (points[i][0], points[i][1], points[i][2]); };
+  const K::Segment_3 segment (K::Point_3 (a[0], a[1], a[2]), K::Point_3 (b[0], b[1], b[2]));
+  const auto tets = r.xSimplices (3);
+  for (std::size_t s = 0; s < tets.size (); s += 4)
+    if (CGAL::do_intersect (segment, K::Tetrahedron_3 (point (tets[s]), point (tets[s + 1]), point (tets[s + 2]),
+                                                       point (tets[s + 3]))))
+      return true;
+  const auto triangles = r.xSimplices (2);
+  for (std::size_t s = 0; s < triangles.size (); s += 3)
+    if (CGAL::do_intersect (segment, K::Triangle_3 (point (triangles[s]), point (triangles[s + 1]),
+                                                    point (triangles[s + 2]))))
+      return true;
+  return false;
 }
 
 } // namespace pcl_wrap::test

@@ -42,6 +42,11 @@ openEdgeOfW (const WrapResult& r);
 std::size_t
 pinchEdges (const WrapResult& r);
 
+/** Does X (a tetrahedron or a triangle of it) meet the segment from \a a to \a b? A tunnel
+  * whose axis X meets is sealed. */
+bool
+xMeetsSegment (const WrapResult& r, const std::vector<Point3>& points, const Point3& a, const Point3& b);
+
 /** Asserts (gtest) X contractible, W = Bd X and W closed. */
 void
 expectWrapInvariants (const WrapResult& r);
