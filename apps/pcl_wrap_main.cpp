@@ -43,6 +43,8 @@ printUsage (std::ostream& out)
          "  --region sphere:x,y,z,r | box:x0,y0,z0,x1,y1,z1\n"
          "                        local modification: front deletion with the threshold above starts\n"
          "                        only from the surface inside this region\n"
+         "  --manifold            split W where it touches itself, so that the output is a closed\n"
+         "                        2-manifold: copies of the split points follow the input points\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
          "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
          "  --weight-scale S      multiply every weight by S (default "
@@ -149,6 +151,8 @@ parseOptions (int argc, char** argv)
       if (!parseRegion (value (), o.parameters.region))
         usageError ("--region takes sphere:x,y,z,r (r >= 0) or box:x0,y0,z0,x1,y1,z1 (lowest corner first)");
     }
+    else if (arg == "--manifold")
+      o.parameters.manifold = true;
     else if (arg == "--weight-field")
       o.parameters.weight_field = value ();
     else if (arg == "--weight-scale")
@@ -206,7 +210,10 @@ main (int argc, char** argv)
     };
     const WrapResult result = computeWrap (points, file.weights, o.parameters, observer);
 
-    apps::writeMesh (o.output, points, result.surface.triangles);
+    std::vector<Point3> vertices = points;
+    for (const PointIndex c : result.copies)
+      vertices.push_back (points[c]);
+    apps::writeMesh (o.output, vertices, result.surface.triangles);
     if (!o.complex_json.empty ())
       apps::writeAtomically (o.complex_json, [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
     if (!o.stats_json.empty ())

@@ -134,6 +134,10 @@ writeStatisticsJson (std::ostream& out, const WrapResult& result)
   writeList (out, s.largest_sinks);
   out << ",\"sinks\":" << s.sinks << ",\"deleted\":" << s.sinks_deleted << ",\"enclosed\":" << s.sinks_enclosed
       << ",\"not_principal\":" << s.sinks_not_principal;
+  out << "},\"manifold\":{\"pinch_edges_split\":" << s.pinch_edges_split
+      << ",\"pinch_vertices_split\":" << s.pinch_vertices_split
+      << ",\"sheet_triangles_doubled\":" << s.sheet_triangles_doubled << ",\"copies\":";
+  writeList (out, result.copies);
   out << "},\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
       << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
       << ",\"isolated_vertices\":" << s.w_isolated_vertices << "},\"timings\":{";
@@ -167,7 +171,11 @@ printSummary (std::ostream& out, const WrapStatistics& s)
   out << "\nX:             " << s.x_simplices[0] << " vertices, " << s.x_simplices[1] << " edges, " << s.x_simplices[2]
       << " triangles, " << s.x_simplices[3] << " tetrahedra after " << s.collapses << " collapses\n"
       << "W:             " << s.w_triangles << " triangles, " << s.w_dangling_edges << " dangling edges, "
-      << s.w_isolated_vertices << " isolated vertices\n"
+      << s.w_isolated_vertices << " isolated vertices";
+  if (s.pinch_edges_split + s.pinch_vertices_split + s.sheet_triangles_doubled > 0)
+    out << "; split " << s.pinch_edges_split << " pinch edges, " << s.pinch_vertices_split << " pinch vertices, "
+        << s.sheet_triangles_doubled << " sheet triangles doubled";
+  out << "\n"
       << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
   for (std::size_t i = 0; i < s.timings.size (); ++i)
     out << (i ? ", " : "") << s.timings[i].stage << ' ' << s.timings[i].seconds;

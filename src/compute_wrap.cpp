@@ -8,6 +8,7 @@
 #include "detail/boundary.h"
 #include "detail/classification.h"
 #include "detail/input_points.h"
+#include "detail/manifold_split.h"
 #include "detail/power_predicates.h"
 #include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
@@ -199,7 +200,22 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
     clock.stageDone ("deletion");
   }
 
-  result.surface = inInputIndices (extractBoundary (complex, x), input_of_vertex);
+  Boundary w = extractBoundary (complex, x);
+  if (parameters.manifold)
+  {
+    ManifoldSplit split = splitPinches (complex, x, w);
+    w.triangles = std::move (split.triangles);
+    // Copies follow the input points: vertex id numVertices() + k -> point points.size () + k.
+    for (std::size_t k = 0; k < split.copy_of.size (); ++k)
+    {
+      input_of_vertex.push_back (static_cast<PointIndex> (points.size () + k));
+      result.copies.push_back (input_of_vertex[split.copy_of[k]]);
+    }
+    stats.pinch_edges_split = split.pinch_edges;
+    stats.pinch_vertices_split = split.pinch_vertices;
+    stats.sheet_triangles_doubled = split.sheet_triangles;
+  }
+  result.surface = inInputIndices (w, input_of_vertex);
   stats.w_triangles = result.surface.triangles.size ();
   stats.w_dangling_edges = result.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result.surface.isolated_vertices.size ();

@@ -18,6 +18,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <sys/stat.h>
 
@@ -284,6 +285,55 @@ TEST_F (Cli, SinkDeletionOptions)
                                 "--delta 1 --region sphere:0,0,0,1,", "--region sphere:0,0,0,1",
                                 "--delta 1 --mode global --region sphere:0,0,0,1"})
     EXPECT_EQ (runCli (DIR + "torus1000.xyz " + DIR + "opened.ply " + bad).status, 2) << bad;
+}
+
+TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
+{
+  std::ostringstream xyz;
+  xyz.precision (17);
+  const auto torus = torusSample (200, 1); // sealed, with pinch edges
+  for (const auto& p : torus)
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  writeText (DIR + "torus200.xyz", xyz.str ());
+  for (const std::string format : {".ply", ".obj", ".vtk"})
+  {
+    SCOPED_TRACE (format);
+    const CliRun run = runCli (DIR + "torus200.xyz " + DIR + "manifold" + format + " --manifold --stats-json " + DIR +
+                               "manifold.json");
+    ASSERT_EQ (run.status, 0) << run.err;
+    pcl::PolygonMesh mesh;
+    if (format == ".ply")
+      ASSERT_GE (pcl::io::loadPLYFile (DIR + "manifold.ply", mesh), 0);
+    else if (format == ".obj")
+      ASSERT_GE (pcl::io::loadOBJFile (DIR + "manifold.obj", mesh), 0);
+    else
+      ASSERT_GT (pcl::io::loadPolygonFileVTK (DIR + "manifold.vtk", mesh), 0);
+    const std::size_t vertices = std::size_t (mesh.cloud.width) * mesh.cloud.height;
+    EXPECT_GT (vertices, torus.size ()) << "copies follow the input points";
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    for (const auto& polygon : mesh.polygons)
+    {
+      ASSERT_EQ (polygon.vertices.size (), 3u);
+      for (auto v : polygon.vertices)
+        ASSERT_LT (std::size_t (v), vertices);
+      triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
+                            std::uint32_t (polygon.vertices[2])});
+    }
+    // Every edge in exactly two triangles, once each way.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    for (const auto& t : triangles)
+      for (int i = 0; i < 3; ++i)
+        ++directed[{t[i], t[(i + 1) % 3]}];
+    for (const auto& [e, count] : directed)
+    {
+      EXPECT_EQ (count, 1);
+      EXPECT_EQ (directed.count ({e.second, e.first}), 1u);
+    }
+    writeText (DIR + "copies.py", "import json, sys\n"
+                                  "m = json.load(open(sys.argv[1]))['manifold']\n"
+                                  "assert m['pinch_edges_split'] > 0 and len(m['copies']) == int(sys.argv[2]) - 200, m\n");
+    EXPECT_EQ (std::system (("python3 " + DIR + "copies.py " + DIR + "manifold.json " + std::to_string (vertices)).c_str ()), 0);
+  }
 }
 
 TEST_F (Cli, UsageErrors)

@@ -8,6 +8,7 @@
 
 #include <pcl_wrap/wrap.h>
 
+#include <pcl/conversions.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/point_types.h>
 
@@ -157,6 +158,91 @@ TEST (PclWrap, WeightsFromAVectorOrAPointField)
   auto nan_weights = weights;
   nan_weights[7] = std::numeric_limits<double>::quiet_NaN ();
   EXPECT_TRUE (fails ([&] (auto& w) { w.setWeights (nan_weights); }));
+}
+
+/** The manifold option and a region through the PCL class: copies of split points follow the
+  * input cloud in the output cloud (an organised cloud then becomes one row), with their fields,
+  * and the polygons form a closed 2-manifold; with indices, copies still follow the whole cloud. */
+TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
+{
+  const auto sample = torusSample (200, 1); // sealed: pinch edges
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> (20, 11);
+  for (std::size_t i = 0; i < cloud->size (); ++i)
+  {
+    auto& q = (*cloud)[i];
+    q.x = i < sample.size () ? float (sample[i][0]) : std::numeric_limits<float>::quiet_NaN ();
+    q.y = i < sample.size () ? float (sample[i][1]) : 0.f;
+    q.z = i < sample.size () ? float (sample[i][2]) : 0.f;
+    q.r = std::uint8_t (i), q.g = std::uint8_t (i / 256);
+  }
+  cloud->is_dense = false;
+  auto indices = pcl::make_shared<pcl::Indices> ();
+  for (int i = 0; i < int (cloud->size ()); ++i)
+    if (i != 3)
+      indices->push_back (i);
+
+  Wrap<pcl::PointXYZRGB> wrap;
+  wrap.setInputCloud (cloud);
+  wrap.setIndices (indices);
+  wrap.setManifold (true);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  const WrapResult& r = wrap.getResult ();
+  ASSERT_FALSE (r.copies.empty ());
+  EXPECT_GT (r.statistics.pinch_edges_split, 0u);
+  pcl::PointCloud<pcl::PointXYZRGB> out;
+  pcl::fromPCLPointCloud2 (mesh.cloud, out);
+  ASSERT_EQ (out.size (), cloud->size () + r.copies.size ());
+  EXPECT_EQ (out.height, 1u);
+  for (std::size_t k = 0; k < r.copies.size (); ++k)
+  {
+    ASSERT_NE (r.copies[k], 3u) << "an unselected point was copied";
+    const auto &copy = out[cloud->size () + k], &original = (*cloud)[r.copies[k]];
+    EXPECT_EQ (copy.x, original.x);
+    EXPECT_EQ (copy.r, original.r);
+    EXPECT_EQ (copy.g, original.g);
+  }
+  std::vector<Triangle> triangles;
+  for (const auto& polygon : mesh.polygons)
+  {
+    for (auto v : polygon.vertices)
+      ASSERT_LT (std::size_t (v), out.size ());
+    triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
+                          std::uint32_t (polygon.vertices[2])});
+  }
+  const SurfaceReport s = describeSurface (triangles);
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+
+  // The points-and-polygons overload appends the same copies.
+  pcl::PointCloud<pcl::PointXYZRGB> points;
+  std::vector<pcl::Vertices> polygons;
+  wrap.reconstruct (points, polygons);
+  EXPECT_EQ (points.size (), out.size ());
+  EXPECT_EQ (polygons.size (), mesh.polygons.size ());
+
+  // A region with front deletion: the torus's hole opens, and W is a manifold without splitting.
+  auto torus = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGB>> ();
+  for (const auto& p : torusSample (1000, 2))
+  {
+    pcl::PointXYZRGB q;
+    q.x = float (p[0]), q.y = float (p[1]), q.z = float (p[2]);
+    torus->push_back (q);
+  }
+  Wrap<pcl::PointXYZRGB> local;
+  local.setInputCloud (torus);
+  local.setDelta (0.2);
+  local.setRegion (Region::sphere (0, 0, 0, 0.7));
+  pcl::PolygonMesh opened;
+  local.reconstruct (opened);
+  EXPECT_GT (local.getStatistics ().sinks_deleted, 0u);
+  std::vector<Triangle> opened_triangles;
+  for (const auto& polygon : opened.polygons)
+    opened_triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
+                                 std::uint32_t (polygon.vertices[2])});
+  const SurfaceReport o = describeSurface (opened_triangles);
+  EXPECT_TRUE (o.closed_manifold);
+  EXPECT_EQ (o.euler, 0);
 }
 
 TEST (PclWrap, EmptyCloudGivesEmptyMesh)

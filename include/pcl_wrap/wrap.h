@@ -68,6 +68,16 @@ public:
     * \param[in] count the number of sinks */
   void setSinks (std::size_t count) { parameters_.sinks = count; }
 
+  /** \brief Local modification: front deletion starts only from the part of W inside \a region
+    * (with the threshold set above).
+    * \param[in] region a Region::sphere or Region::box; Region () for the whole surface */
+  void setRegion (const Region& region) { parameters_.region = region; }
+  /** \brief Output a closed 2-manifold: pinch edges and vertices split, with copies of their
+    * points appended to the output cloud after the input points (an organised cloud then
+    * becomes unorganised), sheet triangles once per side.
+    * \param[in] manifold true to split (default false: W as it is) */
+  void setManifold (bool manifold) { parameters_.manifold = manifold; }
+
   /** \brief Weights (squared radii), one per point of the input cloud (not per index); they
     * take precedence over a weight field. Empty: no weights.
     * \param[in] weights the weights */
@@ -88,7 +98,8 @@ public:
 protected:
   std::string getClassName () const override { return "Wrap"; }
 
-  /** \brief Adds W's triangles to \a output, whose cloud is already the input cloud. */
+  /** \brief Adds W's triangles to \a output, whose cloud is already the input cloud (plus the
+    * copies of a manifold split). */
   void performReconstruction (pcl::PolygonMesh& output) override;
 
   /** \brief Copies the input cloud to \a points and W's triangles to \a polygons. */

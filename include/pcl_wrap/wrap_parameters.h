@@ -91,6 +91,11 @@ struct WrapParameters
     * only. */
   Region region;
 
+  /** \brief Output a closed combinatorial 2-manifold: W's triangles, split where W touches itself
+    * (pinch edges and vertices get copies of their points, appended after the input points) and
+    * sheet triangles given once per side (ALGORITHM.md §8). See WrapResult::copies. */
+  bool manifold = false;
+
   /** \brief Is any sink deletion asked for? */
   bool deletesSinks () const { return delta < std::numeric_limits<double>::infinity () || radius_rel > 0 || sinks > 0; }
 

@@ -90,6 +90,12 @@ struct WrapStatistics
     * whether principal or not. */
   std::size_t sinks_not_principal = 0;
 
+  /** \brief With WrapParameters::manifold: the edges and vertices of W split, and the sheet
+    * triangles doubled (one per side), to make the output a 2-manifold. */
+  std::size_t pinch_edges_split = 0;
+  std::size_t pinch_vertices_split = 0;
+  std::size_t sheet_triangles_doubled = 0;
+
   std::size_t w_triangles = 0;
   std::size_t w_dangling_edges = 0;
   std::size_t w_isolated_vertices = 0;
@@ -110,6 +116,9 @@ struct WrapResult
   std::array<SimplexList, 4> complex;
   std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
   std::vector<PointIndex> hidden;    ///< points with an empty power cell
+  /** \brief With WrapParameters::manifold: the points copied to split W. Point index n + k (n =
+    * the number of input points) in surface.triangles is a copy of point copies[k]. */
+  std::vector<PointIndex> copies;
   /** \brief (duplicate, kept point at the same position). */
   std::vector<std::pair<PointIndex, PointIndex>> duplicates;
 

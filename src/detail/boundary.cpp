@@ -107,6 +107,7 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
         const std::uint32_t* v = complex.vertices (3, t);
         const int* o = OUTWARD_FACET[i];
         w.triangles.push_back ({v[o[0]], v[o[1]], v[o[2]]});
+        w.triangle_ids.push_back (f.id);
       }
     }
   }
@@ -115,6 +116,7 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
     if (x.inY ({2, f}) && x.cofacesInY ({2, f}) == 0)
       sheet.push_back (f);
   orientSheets (complex, sheet, w.triangles);
+  w.triangle_ids.insert (w.triangle_ids.end (), sheet.begin (), sheet.end ());
 
   for (SimplexId e = 0; e < complex.size (1); ++e)
     if (x.inY ({1, e}) && x.cofacesInY ({1, e}) == 0)

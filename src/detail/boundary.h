@@ -18,6 +18,8 @@ struct Boundary
   /** \brief Oriented away from the tetrahedron of X behind them; triangles with none behind
     * them (sheets) oriented consistently across every edge shared by exactly two of them. */
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  /** \brief The id in the complex of each of the triangles. */
+  std::vector<SimplexId> triangle_ids;
   std::vector<std::array<std::uint32_t, 2>> dangling_edges;
   std::vector<std::uint32_t> isolated_vertices;
 };

@@ -62,8 +62,10 @@ Wrap<PointInT>::computeResult ()
   }
   result_ = computeWrap (points, gatherWeights (indices), parameters_);
 
-  // Positions in `points` -> indices into the input cloud.
-  const auto to_cloud = [&] (PointIndex k) { return static_cast<PointIndex> (indices[k]); };
+  // Positions in `points` -> indices into the input cloud; copies (manifold) follow the cloud.
+  const auto to_cloud = [&] (PointIndex k) {
+    return static_cast<PointIndex> (k < indices.size () ? indices[k] : input_->size () + (k - indices.size ()));
+  };
   for (auto& t : result_.surface.triangles)
     for (auto& v : t)
       v = to_cloud (v);
@@ -78,6 +80,8 @@ Wrap<PointInT>::computeResult ()
   for (auto& v : result_.skipped)
     v = to_cloud (v);
   for (auto& v : result_.hidden)
+    v = to_cloud (v);
+  for (auto& v : result_.copies)
     v = to_cloud (v);
   for (auto& d : result_.duplicates)
     d = {to_cloud (d.first), to_cloud (d.second)};
@@ -118,8 +122,20 @@ Wrap<PointInT>::computeResultOrReport ()
 template <typename PointInT> void
 Wrap<PointInT>::performReconstruction (pcl::PolygonMesh& output)
 {
-  if (computeResultOrReport ())
-    appendPolygons (output.polygons);
+  if (!computeResultOrReport ())
+    return;
+  appendPolygons (output.polygons);
+  if (result_.copies.empty ())
+    return;
+  pcl::PCLPointCloud2& cloud = output.cloud;
+  const std::size_t step = cloud.point_step;
+  const std::size_t old_size = cloud.data.size ();
+  cloud.data.resize (old_size + result_.copies.size () * step);
+  for (std::size_t k = 0; k < result_.copies.size (); ++k)
+    std::copy_n (cloud.data.begin () + result_.copies[k] * step, step, cloud.data.begin () + old_size + k * step);
+  cloud.width = static_cast<std::uint32_t> (cloud.data.size () / step);
+  cloud.height = 1;
+  cloud.row_step = static_cast<std::uint32_t> (cloud.width * step);
 }
 
 template <typename PointInT> void
@@ -127,8 +143,11 @@ Wrap<PointInT>::performReconstruction (pcl::PointCloud<PointInT>& points, std::v
 {
   points = *input_;
   polygons.clear ();
-  if (computeResultOrReport ())
-    appendPolygons (polygons);
+  if (!computeResultOrReport ())
+    return;
+  appendPolygons (polygons);
+  for (const PointIndex c : result_.copies)
+    points.push_back (points[c]);
 }
 
 } // namespace pcl_wrap

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "boundary.h"
+#include "retraction.h"
+#include "simplicial_complex.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief W's triangles as a closed combinatorial 2-manifold (ALGORITHM.md §8). */
+struct ManifoldSplit
+{
+  /** \brief Oriented triangles; a vertex id v >= numVertices() is a copy of copy_of[v -
+    * numVertices()]. A sheet triangle appears once per side, in opposite orientations. */
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> copy_of;
+  std::size_t pinch_edges = 0;     ///< edges of W on more than two sides, split
+  std::size_t pinch_vertices = 0;  ///< vertices whose triangles form more than one fan, split
+  std::size_t sheet_triangles = 0; ///< triangles with the outside on both sides, doubled
+};
+
+/** \brief Splits W (\a w, the boundary of \a x) where it touches itself. Each triangle side that
+  * faces the outside is a face; around an edge, the two faces that bound the same sector of the
+  * outside (a run of tetrahedra not in X, found by walking around the edge in Del S) are glued;
+  * then every vertex gets one copy per fan of faces glued around it. The faces are the boundary
+  * of a thickened X, hence a closed oriented 2-manifold.
+  * \throws std::logic_error if W is not closed (it always is: ALGORITHM.md §5.5) */
+ManifoldSplit
+splitPinches (const SimplicialComplex& complex, const Retraction& x, const Boundary& w);
+
+} // namespace pcl_wrap::detail
