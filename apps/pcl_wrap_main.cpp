@@ -31,7 +31,9 @@ printUsage (std::ostream& out)
          "writes it to OUTPUT (.ply .obj .vtk). The output's vertices are the input points in input order,\n"
          "so a face's indices are input point indices.\n\n"
          "options:\n"
-         "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts\n"
+         "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts,\n"
+         "                        the deletion counts and the wrap filtration (each simplex of X with\n"
+         "                        the sink size at which it leaves; all sink sizes)\n"
          "  --stats               print a summary\n"
          "  --stats-json FILE     write the statistics, with timings per stage, as JSON\n"
          "  --delta D             wrap tighter: delete sinks (empty spheres) of squared radius > D\n"
@@ -180,6 +182,7 @@ parseOptions (int argc, char** argv)
   }
   if (positional.size () != 2)
     usageError ("expected INPUT and OUTPUT");
+  o.parameters.filtration = !o.complex_json.empty ();
   o.input = positional[0];
   o.output = positional[1];
   if (o.parameters.region.shape != Region::Shape::everywhere &&

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <vector>
 
 namespace pcl_wrap::apps
@@ -62,7 +63,7 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
   std::vector<PointIndex> duplicates;
   for (const auto& d : result.duplicates)
     duplicates.push_back (d.first);
-  out << "{\"n\":" << num_points << ",\"hidden\":";
+  out << std::setprecision (17) << "{\"n\":" << num_points << ",\"hidden\":";
   writeList (out, result.hidden);
   out << ",\"skipped\":";
   writeList (out, result.skipped);
@@ -94,7 +95,36 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
   writeTuples (out, edges);
   out << ",\"vertices\":";
   writeList (out, vertices);
+  out << ",\"copies\":";
+  writeList (out, result.copies);
 
+  // The wrap filtration: each simplex of the basic X with the size of the sink whose deletion
+  // removes it (null: none does), and every sink size.
+  if (!result.filtration.empty ())
+  {
+    out << "},\"filtration\":{\"sink_sizes\":";
+    writeList (out, result.filtration.sinkSizes ());
+    for (int k = 0; k <= 3; ++k)
+    {
+      const SimplexList& list = result.complex[k];
+      out << ",\"" << k << "\":[";
+      bool first = true;
+      for (std::size_t s = 0; s < list.size () && !list.values.empty (); ++s)
+        if (list.values[s] < std::numeric_limits<double>::infinity ()) // in the basic X
+        {
+          out << (first ? "[" : ",[");
+          first = false;
+          for (int i = 0; i <= k; ++i)
+            out << list.vertices[(k + 1) * s + i] << ',';
+          std::isfinite (list.values[s]) ? out << list.values[s] : out << "null";
+          out << ']';
+        }
+      out << ']';
+    }
+  }
+  const WrapStatistics& st = result.statistics;
+  out << "},\"deletion\":{\"sinks\":" << st.sinks << ",\"deleted\":" << st.sinks_deleted
+      << ",\"enclosed\":" << st.sinks_enclosed << ",\"not_principal\":" << st.sinks_not_principal;
   out << "},\"class_counts\":{";
   for (int k = 0; k <= 3; ++k)
   {

@@ -5,6 +5,8 @@
 // boundary. Each arrow is one file of src/detail.
 #include <pcl_wrap/compute_wrap.h>
 
+#include "filtration_data.h"
+
 #include "detail/boundary.h"
 #include "detail/classification.h"
 #include "detail/input_points.h"
@@ -15,6 +17,7 @@
 #include "detail/simplicial_complex.h"
 #include "detail/sink_deletion.h"
 #include "detail/stage_clock.h"
+#include "detail/wrap_filtration.h"
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
@@ -57,21 +60,6 @@ namespace
 {
 
 using namespace detail;
-
-WrapSurface
-inInputIndices (const Boundary& w, const std::vector<PointIndex>& input_of_vertex)
-{
-  WrapSurface surface;
-  surface.triangles.reserve (w.triangles.size ());
-  for (const auto& t : w.triangles)
-    surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
-  for (const auto& e : w.dangling_edges)
-    surface.dangling_edges.push_back ({std::min (input_of_vertex[e[0]], input_of_vertex[e[1]]),
-                                       std::max (input_of_vertex[e[0]], input_of_vertex[e[1]])});
-  for (std::uint32_t v : w.isolated_vertices)
-    surface.isolated_vertices.push_back (input_of_vertex[v]);
-  return surface;
-}
 
 std::array<SimplexList, 4>
 inInputIndices (const SimplicialComplex& complex, const Classification& classification, const Retraction& x,
@@ -178,13 +166,17 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   input = {};
   clock.stageDone ("triangulation");
 
-  const SimplicialComplex complex (triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
-                                   std::move (triangulation.top_simplices), triangulation.neighbours);
+  // Shared: a filtration in the result keeps the complex and the classes.
+  const auto complex_kept = std::make_shared<const SimplicialComplex> (
+      triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
+      std::move (triangulation.top_simplices), triangulation.neighbours);
+  const SimplicialComplex& complex = *complex_kept;
   triangulation = {};
   clock.stageDone ("complex");
 
   const PowerPredicates predicates (vertex_positions, vertex_weights);
-  const Classification classification = classify (complex, predicates);
+  const auto classification_kept = std::make_shared<const Classification> (classify (complex, predicates));
+  const Classification& classification = *classification_kept;
   stats.perturbations = predicates.perturbations ();
   for (int k = 0; k <= 3; ++k)
     for (SimplexClass c : classification.classes[k])
@@ -194,9 +186,19 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   Retraction x (complex, classification);
   stats.collapses = x.retract ();
   clock.stageDone ("collapse");
+  std::shared_ptr<const WrapFiltration> filtration;
+  if (parameters.filtration)
+  {
+    filtration = std::make_shared<const WrapFiltration> (
+        wrapFiltration (complex, classification, vertex_positions, vertex_weights));
+    result.filtration = Filtration (std::make_shared<const Filtration::Data> (
+        Filtration::Data{complex_kept, classification_kept, filtration, input_of_vertex}));
+    recordSinks (*filtration, stats);
+    clock.stageDone ("filtration");
+  }
   if (parameters.deletesSinks ())
   {
-    deleteSinks (complex, classification, vertex_positions, vertex_weights, parameters, x, stats);
+    deleteSinks (complex, classification, vertex_positions, vertex_weights, parameters, filtration.get (), x, stats);
     clock.stageDone ("deletion");
   }
 
@@ -223,7 +225,11 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
     for (SimplexId s = 0; s < complex.size (k); ++s)
       stats.x_simplices[k] += x.inY ({k, s});
   if (parameters.keep_complex)
+  {
     result.complex = inInputIndices (complex, classification, x, input_of_vertex);
+    for (int k = 0; k <= 3 && filtration; ++k)
+      result.complex[k].values = filtration->value[k];
+  }
   clock.stageDone ("boundary");
   return result;
 }

@@ -140,7 +140,13 @@ assert sum(c["class_counts"]["3"].values()) == s["simplices"]["3"]["centered"] +
 chi = sum((-1) ** int(k) * len(c["X"][k]) for k in "0123")
 assert chi == 1, chi
 t = s["timings"]; assert abs(sum(v for k, v in t.items() if k != "total") - t["total"]) < 1e-6
-assert set(t) >= {"triangulation", "classification", "collapse", "total"}
+assert set(t) >= {"triangulation", "classification", "collapse", "filtration", "total"}
+f = c["filtration"]; sizes = f["sink_sizes"]
+assert sizes == sorted(sizes, reverse=True) and len(sizes) == s["deletion"]["sinks"] > 0
+for k in "0123":
+    assert len(f[k]) == len(c["X"][k])  # no deletion asked: X is the basic X
+    assert all(x[-1] is None or x[-1] in sizes for x in f[k])
+assert any(x[-1] is not None for x in f["3"]) and c["deletion"]["deleted"] == 0
 )PY";
   writeText (DIR + "check.py", check);
   EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()), 0);

@@ -11,10 +11,15 @@
 
 #include "detail/wrap_filtration.h"
 
+#include <pcl_wrap/compute_wrap.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
 
 namespace pcl_wrap::test
 {
@@ -172,6 +177,65 @@ TEST (WrapFiltration, DeletingTheLargestSinksOpensTheTorusTunnel)
     }
   }
   EXPECT_GE (opened, 3u) << "deleting at most 6 sinks should open most tori";
+}
+
+/** W's triangles, each rotated to start at its smallest index (orientation kept), sorted. */
+std::vector<std::array<PointIndex, 3>>
+canonical (const WrapSurface& w)
+{
+  auto t = w.triangles;
+  for (auto& a : t)
+    std::rotate (a.begin (), std::min_element (a.begin (), a.end ()), a.end ());
+  std::sort (t.begin (), t.end ());
+  return t;
+}
+
+/** The public filtration: W(delta) from one computation equals a global deletion at delta run
+  * from scratch, for thresholds at, between and beyond the sink sizes; X(delta) is nested; the
+  * kept complex carries the values. */
+TEST (WrapFiltration, PublicSurfacesEqualGlobalDeletionFromScratch)
+{
+  for (const auto& points : {torusSample (1000, 2), doubleTorusSample (1200, 3), cubeSample (500, 4)})
+  {
+    WrapParameters parameters;
+    parameters.filtration = true;
+    const WrapResult r = computeWrap (points, parameters);
+    ASSERT_FALSE (r.filtration.empty ());
+    const std::vector<double>& sizes = r.filtration.sinkSizes ();
+    ASSERT_GT (sizes.size (), 3u);
+    EXPECT_TRUE (std::is_sorted (sizes.rbegin (), sizes.rend ()));
+    EXPECT_EQ (canonical (r.filtration.surface (std::numeric_limits<double>::infinity ())), canonical (r.surface));
+
+    std::vector<double> deltas = {std::numeric_limits<double>::infinity (), 1e9, sizes[0], sizes[1],
+                                  0.5 * (sizes[2] + sizes[3]), sizes[sizes.size () / 2], 0.0};
+    std::array<std::size_t, 4> previous{};
+    previous.fill (~std::size_t (0));
+    for (double delta : deltas)
+    {
+      SCOPED_TRACE ("delta " + std::to_string (delta));
+      WrapParameters global;
+      global.deletion = SinkDeletion::global;
+      global.delta = delta;
+      EXPECT_EQ (canonical (r.filtration.surface (delta)), canonical (computeWrap (points, global).surface));
+      const auto size = r.filtration.xSize (delta);
+      for (int k = 0; k <= 3; ++k)
+        EXPECT_LE (size[k], previous[k]) << "X(delta) shrinks as delta does";
+      previous = size;
+    }
+    EXPECT_EQ (r.filtration.xSize (0.0)[3], 0u) << "below every sink, no tetrahedron is left";
+    EXPECT_NE (canonical (r.filtration.surface (sizes[3])), canonical (r.surface));
+
+    // The values in the kept complex say the same: in X (basic) iff finite or -inf.
+    for (int k = 0; k <= 3; ++k)
+    {
+      ASSERT_EQ (r.complex[k].values.size (), r.complex[k].size ());
+      for (std::size_t s = 0; s < r.complex[k].size (); ++s)
+        EXPECT_EQ (bool (r.complex[k].in_x[s]), r.complex[k].values[s] < std::numeric_limits<double>::infinity ());
+    }
+  }
+  WrapParameters none;
+  EXPECT_TRUE (computeWrap (torusSample (100, 1), none).filtration.empty ());
+  EXPECT_THROW (Filtration ().surface (1.0), std::logic_error);
 }
 
 } // namespace

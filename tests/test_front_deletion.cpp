@@ -17,6 +17,8 @@
 #include <set>
 #include <memory>
 #include <numeric>
+#include <random>
+#include <tuple>
 
 namespace pcl_wrap::test
 {
@@ -34,13 +36,13 @@ struct Wrapped
 };
 
 Wrapped
-frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0)
+frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0, const std::vector<std::uint8_t>& in_front = {})
 {
   detail::WrapFiltration order;
   detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);
   Wrapped w{std::make_unique<Retraction> (p.complex, p.classification), {}};
   w.y->retract (order_seed);
-  w.deletion = detail::deleteExposedSinks (p.complex, *w.y, order, delta, {}, order_seed);
+  w.deletion = detail::deleteExposedSinks (p.complex, *w.y, order, delta, in_front, order_seed);
   return w;
 }
 
@@ -107,10 +109,15 @@ TEST (FrontDeletion, TorusOpensToAClosedGenusOneManifoldThroughEveryPoint)
     }
 }
 
-/** Points on a box's surface around an inner sphere's: a solid with a cavity. */
+/** Points on a box's surface around an inner sphere's, the box pierced by a cylindrical tunnel
+  * (radius 0.3, axis x = y = 0.62): a solid with a cavity and a tunnel. */
 std::vector<Point3>
-boxWithCavity (unsigned seed)
+boxWithCavityAndTunnel (unsigned seed)
 {
+  constexpr double AXIS = 0.62, RADIUS = 0.3;
+  const auto inTunnel = [&] (const Point3& q) {
+    return (q[0] - AXIS) * (q[0] - AXIS) + (q[1] - AXIS) * (q[1] - AXIS) < RADIUS * RADIUS;
+  };
   std::vector<Point3> points;
   for (const auto& q : cubeSample (3000, seed))
   {
@@ -121,16 +128,24 @@ boxWithCavity (unsigned seed)
         a = i;
     Point3 r = q;
     r[a] = q[a] < 0 ? -1 : 1;
-    points.push_back (r);
+    if (!inTunnel (r))
+      points.push_back (r);
   }
   for (const auto& q : sphereSample (600, seed, 1e-3))
     points.push_back ({0.5 * q[0], 0.5 * q[1], 0.5 * q[2]});
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> unit (0.0, 1.0);
+  for (int i = 0; i < 500; ++i)
+  {
+    const double angle = 2 * M_PI * unit (random), z = 2 * unit (random) - 1;
+    points.push_back ({AXIS + RADIUS * std::cos (angle), AXIS + RADIUS * std::sin (angle), z});
+  }
   return points;
 }
 
 TEST (FrontDeletion, NeverCarvesACavityWhereGlobalDeletionDoes)
 {
-  const Pipeline cavity (boxWithCavity (2));
+  const Pipeline cavity (boxWithCavityAndTunnel (2));
   const Pipeline sphere (sphereSample (4000, 3, 1e-3));
   const Pipeline torus (torusSample (1000, 1));
   for (const auto* p : {&cavity, &sphere, &torus})
@@ -152,14 +167,23 @@ TEST (FrontDeletion, NeverCarvesACavityWhereGlobalDeletionDoes)
 
 TEST (FrontDeletion, IndependentOfTheOrderOfCollapses)
 {
-  const Pipeline p (torusSample (1000, 2));
-  const Wrapped reference = frontWrap (p, 0.05);
-  for (std::uint64_t order : {1u, 2u})
+  const Pipeline torus (torusSample (1000, 2));
+  const Pipeline two (doubleTorusSample (1200, 1));
+  std::vector<std::uint8_t> left; // a region: the left tunnel of the double torus
+  for (const Point3& q : two.points)
+    left.push_back (Region::sphere (-1.1, 0, 0, 0.75).contains (q));
+  for (const auto& [p, delta, in_front] : {std::tuple (&torus, 0.05, std::vector<std::uint8_t> ()),
+                                          std::tuple (&two, 0.2, left)})
   {
-    const Wrapped w = frontWrap (p, 0.05, order);
-    for (int k = 0; k <= 3; ++k)
-      for (SimplexId s = 0; s < p.complex.size (k); ++s)
-        ASSERT_EQ (w.y->inY ({k, s}), reference.y->inY ({k, s}));
+    const Wrapped reference = frontWrap (*p, delta, 0, in_front);
+    EXPECT_GT (reference.deletion.deleted, 0u);
+    for (std::uint64_t order : {1u, 2u})
+    {
+      const Wrapped w = frontWrap (*p, delta, order, in_front);
+      for (int k = 0; k <= 3; ++k)
+        for (SimplexId s = 0; s < p->complex.size (k); ++s)
+          ASSERT_EQ (w.y->inY ({k, s}), reference.y->inY ({k, s}));
+    }
   }
 }
 

@@ -245,6 +245,38 @@ TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
   EXPECT_EQ (o.euler, 0);
 }
 
+/** The filtration through the PCL class speaks cloud indices, like the mesh. */
+TEST (PclWrap, FiltrationSurfacesIndexTheCloud)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  for (const auto& p : torusSample (1600, 3))
+    cloud->push_back (pcl::PointXYZ (float (p[0]), float (p[1]), float (p[2])));
+  auto indices = pcl::make_shared<pcl::Indices> ();
+  for (int i = 1; i < int (cloud->size ()); i += 2)
+    indices->push_back (i);
+  Wrap<pcl::PointXYZ> wrap;
+  wrap.setInputCloud (cloud);
+  wrap.setIndices (indices);
+  wrap.setFiltration (true);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  const Filtration& f = wrap.getResult ().filtration;
+  ASSERT_FALSE (f.empty ());
+  std::set<std::array<std::uint32_t, 3>> from_mesh, basic;
+  for (const auto& polygon : mesh.polygons)
+    from_mesh.insert ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
+                       std::uint32_t (polygon.vertices[2])});
+  for (const auto& t : f.surface (std::numeric_limits<double>::infinity ()).triangles)
+    basic.insert ({t[0], t[1], t[2]});
+  EXPECT_EQ (basic, from_mesh);
+  const std::set<pcl::index_t> selected (indices->begin (), indices->end ());
+  const WrapSurface tighter = f.surface (f.sinkSizes ().at (3));
+  ASSERT_FALSE (tighter.triangles.empty ());
+  for (const auto& t : tighter.triangles)
+    for (auto v : t)
+      ASSERT_TRUE (selected.count (v));
+}
+
 TEST (PclWrap, EmptyCloudGivesEmptyMesh)
 {
   Wrap<pcl::PointXYZ> wrap;

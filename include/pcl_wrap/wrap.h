@@ -78,6 +78,11 @@ public:
     * \param[in] manifold true to split (default false: W as it is) */
   void setManifold (bool manifold) { parameters_.manifold = manifold; }
 
+  /** \brief Compute the wrap filtration: getResult().filtration then gives W(delta) for any delta
+    * (in cloud indices) by a linear filter, and the kept complex each simplex's value.
+    * \param[in] filtration true to compute it (default false) */
+  void setFiltration (bool filtration) { parameters_.filtration = filtration; }
+
   /** \brief Weights (squared radii), one per point of the input cloud (not per index); they
     * take precedence over a weight field. Empty: no weights.
     * \param[in] weights the weights */

@@ -96,6 +96,11 @@ struct WrapParameters
     * sheet triangles given once per side (ALGORITHM.md §8). See WrapResult::copies. */
   bool manifold = false;
 
+  /** \brief Compute the wrap filtration: every simplex's value (in the kept complex) and
+    * WrapResult::filtration, which gives X(delta) and W(delta) for any delta by a linear filter.
+    * Costs the exact ordering of all sinks and one more retraction, and keeps the complex. */
+  bool filtration = false;
+
   /** \brief Is any sink deletion asked for? */
   bool deletesSinks () const { return delta < std::numeric_limits<double>::infinity () || radius_rel > 0 || sinks > 0; }
 

@@ -5,7 +5,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +39,11 @@ struct SimplexList
   std::vector<PointIndex> vertices;
   std::vector<SimplexClass> classes; ///< one per simplex
   std::vector<std::uint8_t> in_x;    ///< one per simplex: 1 when the simplex is in X
+  /** \brief With WrapParameters::filtration, one per simplex: its wrap filtration value, the size
+    * of the sink whose deletion removes it from X when every sink is deleted in order of
+    * decreasing size (ALGORITHM.md §6); +inf when the basic construction already removes it,
+    * -inf when nothing does. It is in X(delta) iff value <= delta and value < +inf. */
+  std::vector<double> values;
 
   std::size_t size () const { return classes.size (); }
 };
@@ -51,6 +58,34 @@ struct WrapSurface
   std::vector<std::array<PointIndex, 2>> dangling_edges;
   /** \brief Vertices of X with no edge of X on them. */
   std::vector<PointIndex> isolated_vertices;
+};
+
+/** \brief The wrap filtration (ALGORITHM.md §6): one pass deleting every sink in order of
+  * decreasing size gives each simplex the size at which it leaves X, so X(delta) and W(delta) = Bd
+  * X(delta), the global deletion of every sink larger than delta, come out of a linear filter for
+  * any delta without a new triangulation or retraction. Nested: X(d1) contains X(d2) for d1 > d2.
+  * Shares the complex it was computed on; copies are cheap. */
+class Filtration
+{
+public:
+  struct Data;
+  Filtration () = default;
+  explicit Filtration (std::shared_ptr<const Data> data) : data_ (std::move (data)) {}
+
+  /** \brief Was it computed (WrapParameters::filtration)? */
+  bool empty () const { return !data_; }
+  /** \brief The sizes (squared radii) of the sinks other than omega, decreasing: the values of
+    * delta where X(delta) can change. */
+  const std::vector<double>& sinkSizes () const;
+  /** \brief The number of simplices of X(delta) per dimension. */
+  std::array<std::size_t, 4> xSize (double delta) const;
+  /** \brief W(delta) = Bd X(delta); delta = +inf gives the basic wrap. */
+  WrapSurface surface (double delta) const;
+  /** \brief The same filtration with every point index i read as \a index (i). */
+  Filtration reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const;
+
+private:
+  std::shared_ptr<const Data> data_;
 };
 
 /** \brief Wall-clock seconds of one stage of the construction. */
@@ -119,6 +154,8 @@ struct WrapResult
   /** \brief With WrapParameters::manifold: the points copied to split W. Point index n + k (n =
     * the number of input points) in surface.triangles is a copy of point copies[k]. */
   std::vector<PointIndex> copies;
+  /** \brief With WrapParameters::filtration: X(delta) and W(delta) for any delta. */
+  Filtration filtration;
   /** \brief (duplicate, kept point at the same position). */
   std::vector<std::pair<PointIndex, PointIndex>> duplicates;
 

@@ -5,6 +5,8 @@
 #include "retraction.h"
 #include "simplicial_complex.h"
 
+#include <pcl_wrap/wrap_result.h>
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -27,5 +29,9 @@ struct Boundary
 /** \brief The boundary of X, the simplices still in Y after \a x has retracted. */
 Boundary
 extractBoundary (const SimplicialComplex& complex, const Retraction& x);
+
+/** \brief \a w with vertex v read as point input_of_vertex[v]. */
+WrapSurface
+inInputIndices (const Boundary& w, const std::vector<PointIndex>& input_of_vertex);
 
 } // namespace pcl_wrap::detail

@@ -36,15 +36,23 @@ medianSpacing (const std::vector<Point3>& positions)
 }
 
 void
-deleteSinks (const SimplicialComplex& complex, const Classification& classification,
-             const std::vector<Point3>& positions, const std::vector<double>& weights,
-             const WrapParameters& parameters, Retraction& y, WrapStatistics& stats)
+recordSinks (const WrapFiltration& order, WrapStatistics& stats)
 {
-  WrapFiltration order;
-  orderSinks (complex, classification, positions, weights, order);
   stats.sinks = order.sinks.size ();
   stats.largest_sinks.assign (order.sink_sizes.begin (),
                               order.sink_sizes.begin () + std::min<std::size_t> (10, order.sink_sizes.size ()));
+}
+
+void
+deleteSinks (const SimplicialComplex& complex, const Classification& classification,
+             const std::vector<Point3>& positions, const std::vector<double>& weights,
+             const WrapParameters& parameters, const WrapFiltration* ordered, Retraction& y, WrapStatistics& stats)
+{
+  WrapFiltration own;
+  if (!ordered)
+    orderSinks (complex, classification, positions, weights, own);
+  const WrapFiltration& order = ordered ? *ordered : own;
+  recordSinks (order, stats);
   stats.spacing = medianSpacing (positions);
   stats.delta = parameters.radius_rel > 0 ? std::pow (parameters.radius_rel * stats.spacing, 2) : parameters.delta;
 

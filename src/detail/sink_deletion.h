@@ -45,11 +45,15 @@ deleteSinksGlobally (Retraction& y, const WrapFiltration& order, const KeepGoing
 double
 medianSpacing (const std::vector<Point3>& positions);
 
+/** \brief The number of sinks and the largest sizes, from sinks in order, into \a stats. */
+void
+recordSinks (const WrapFiltration& order, WrapStatistics& stats);
+
 /** \brief After the basic retraction of \a y: the sink deletion \a parameters ask for, with its
-  * numbers in \a stats. */
+  * numbers in \a stats. \a ordered: the sinks already in order, or null. */
 void
 deleteSinks (const SimplicialComplex& complex, const Classification& classification,
              const std::vector<Point3>& positions, const std::vector<double>& weights,
-             const WrapParameters& parameters, Retraction& y, WrapStatistics& stats);
+             const WrapParameters& parameters, const WrapFiltration* ordered, Retraction& y, WrapStatistics& stats);
 
 } // namespace pcl_wrap::detail

@@ -17,7 +17,8 @@ namespace pcl_wrap::detail
 
 /** \brief The wrap filtration (ALGORITHM.md §6): every sink deleted in order of decreasing size,
   * each deletion followed by a retraction, and every simplex given the size of the sink whose
-  * deletion removed it. X(delta) = the simplices of value <= delta, for any delta, by a filter.
+  * deletion removed it. X(delta) = the simplices of finite value <= delta, for any delta, by a
+  * filter.
   */
 struct WrapFiltration
 {
@@ -33,7 +34,12 @@ struct WrapFiltration
   std::size_t not_principal = 0;
   std::size_t deletions = 0;
 
-  bool inX (Simplex s, double delta) const { return value[s.dim][s.id] <= delta; }
+  /** \brief Is \a s in X(delta), kept by every deletion of a sink larger than delta? (+inf
+    * values, removed by the basic construction, never are; delta = +inf gives the basic X.) */
+  bool inX (Simplex s, double delta) const
+  {
+    return value[s.dim][s.id] <= delta && value[s.dim][s.id] < std::numeric_limits<double>::infinity ();
+  }
 };
 
 /** \brief Orders the sinks of \a classification by decreasing size (vertex ids of \a complex

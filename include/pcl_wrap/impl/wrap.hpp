@@ -85,6 +85,8 @@ Wrap<PointInT>::computeResult ()
     v = to_cloud (v);
   for (auto& d : result_.duplicates)
     d = {to_cloud (d.first), to_cloud (d.second)};
+  if (!result_.filtration.empty ())
+    result_.filtration = result_.filtration.reindexed (to_cloud);
 }
 
 template <typename PointInT> void

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "detail/classification.h"
+#include "detail/simplicial_complex.h"
+#include "detail/wrap_filtration.h"
+
+#include <pcl_wrap/wrap_result.h>
+
+#include <memory>
+#include <vector>
+
+namespace pcl_wrap
+{
+
+/** What a Filtration shares: the complex it was computed on and the values. */
+struct Filtration::Data
+{
+  std::shared_ptr<const detail::SimplicialComplex> complex;
+  std::shared_ptr<const detail::Classification> classification;
+  std::shared_ptr<const detail::WrapFiltration> filtration;
+  std::vector<PointIndex> point_of_vertex; ///< vertex id -> point index
+};
+
+} // namespace pcl_wrap
