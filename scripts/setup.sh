@@ -10,6 +10,11 @@ PACKAGES=(
   libgtest-dev mpi-default-dev
   clang libclang-rt-dev llvm   # the sanitizer and fuzzing build (libFuzzer, ASan, UBSan)
   libcgal-demo   # sample data: the Stanford bunny, kitten, fandisk
+  # The ROS1 node and its test against a real roscore (Debian's ROS packages)
+  libroscpp-dev libnodeletlib-dev libnodeletlib-tools libsensor-msgs-dev libpcl-conversions-dev
+  libpcl-msgs-dev libvisualization-msgs-dev python3-roslaunch python3-rostopic rosout catkin
+  # Pictures: pcl_viewer and an X server without a display
+  pcl-tools xvfb xauth
 )
 
 missing=()

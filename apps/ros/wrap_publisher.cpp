@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "wrap_publisher.h"
+
+#include <pcl_wrap/point_field.h>
+#include <pcl_wrap/wrap.h>
+
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/PolygonMesh.h>
+#include <pcl/conversions.h>
+#include <pcl/point_types.h>
+#include <pcl_conversions/pcl_conversions.h>
+#include <pcl_msgs/PolygonMesh.h>
+#include <visualization_msgs/Marker.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pcl_wrap_ros
+{
+
+pcl_wrap::WrapParameters
+readParameters (const ros::NodeHandle& private_nh)
+{
+  pcl_wrap::WrapParameters p;
+  private_nh.param ("delta", p.delta, p.delta);
+  double radius = 0.0;
+  if (private_nh.getParam ("radius", radius))
+    p.delta = radius * radius;
+  private_nh.param ("radius_rel", p.radius_rel, p.radius_rel);
+  std::string mode = p.deletion == pcl_wrap::SinkDeletion::front ? "front" : "global";
+  private_nh.param ("mode", mode, mode);
+  if (mode != "front" && mode != "global")
+    throw std::invalid_argument ("~mode must be front or global, not '" + mode + "'");
+  p.deletion = mode == "front" ? pcl_wrap::SinkDeletion::front : pcl_wrap::SinkDeletion::global;
+  int sinks = static_cast<int> (p.sinks);
+  private_nh.param ("sinks", sinks, sinks);
+  if (sinks < 0)
+    throw std::invalid_argument ("~sinks must be >= 0");
+  p.sinks = static_cast<std::size_t> (sinks);
+  std::vector<double> region;
+  if (private_nh.getParam ("region", region))
+  {
+    if (region.size () == 4)
+      p.region = pcl_wrap::Region::sphere (region[0], region[1], region[2], region[3]);
+    else if (region.size () == 6)
+      p.region = pcl_wrap::Region::box (region[0], region[1], region[2], region[3], region[4], region[5]);
+    else
+      throw std::invalid_argument ("~region takes [x, y, z, r] (a sphere) or [x0, y0, z0, x1, y1, z1] (a box)");
+  }
+  private_nh.param ("manifold", p.manifold, p.manifold);
+  int threads = static_cast<int> (p.num_threads);
+  private_nh.param ("threads", threads, threads);
+  p.num_threads = static_cast<unsigned> (std::max (threads, 0));
+  private_nh.param ("weight_field", p.weight_field, p.weight_field);
+  private_nh.param ("weight_scale", p.weight_scale, p.weight_scale);
+  p.keep_complex = false; // the node publishes W only
+  return p;
+}
+
+WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private_nh)
+  : parameters_ (readParameters (private_nh))
+  , mesh_publisher_ (nh.advertise<pcl_msgs::PolygonMesh> ("mesh", 1))
+  , marker_publisher_ (nh.advertise<visualization_msgs::Marker> ("marker", 1))
+  , subscriber_ (nh.subscribe ("cloud", 1, &WrapPublisher::onCloud, this))
+{}
+
+namespace
+{
+
+/** The weights of the points from \a field of \a cloud (empty: none). */
+std::vector<double>
+weightsOf (const pcl::PCLPointCloud2& cloud, const std::string& field)
+{
+  if (field.empty ())
+    return {};
+  const auto f = std::find_if (cloud.fields.begin (), cloud.fields.end (),
+                               [&] (const pcl::PCLPointField& g) { return g.name == field; });
+  if (f == cloud.fields.end ())
+    throw std::invalid_argument ("the cloud has no field '" + field + "'");
+  std::vector<double> weights (std::size_t (cloud.width) * cloud.height);
+  for (std::size_t i = 0; i < weights.size (); ++i)
+    weights[i] = pcl_wrap::readPointField (&cloud.data[i * cloud.point_step], *f);
+  return weights;
+}
+
+visualization_msgs::Marker
+triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pcl::Vertices>& polygons)
+{
+  visualization_msgs::Marker m;
+  m.ns = "pcl_wrap";
+  m.id = 0;
+  m.type = visualization_msgs::Marker::TRIANGLE_LIST;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = m.scale.z = 1.0;
+  m.color.r = 0.8f, m.color.g = 0.7f, m.color.b = 0.5f, m.color.a = 1.0f;
+  m.points.reserve (3 * polygons.size ());
+  for (const auto& polygon : polygons)
+    for (const auto v : polygon.vertices)
+    {
+      geometry_msgs::Point q;
+      q.x = points[v].x, q.y = points[v].y, q.z = points[v].z;
+      m.points.push_back (q);
+    }
+  return m;
+}
+
+} // namespace
+
+void
+WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
+{
+  pcl::PCLPointCloud2 input;
+  pcl_conversions::toPCL (*msg, input);
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  pcl::fromPCLPointCloud2 (input, *cloud);
+
+  pcl_wrap::Wrap<pcl::PointXYZ> wrap;
+  wrap.setParameters (parameters_);
+  wrap.setWeightField ("");
+  try
+  {
+    wrap.setWeights (weightsOf (input, parameters_.weight_field));
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR_STREAM ("pcl_wrap: " << e.what () << "; cloud skipped");
+    return;
+  }
+  wrap.setInputCloud (cloud);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  const auto& stats = wrap.getStatistics ();
+  ROS_DEBUG_STREAM ("pcl_wrap: " << stats.points_used << " points, " << mesh.polygons.size () << " triangles in "
+                                 << stats.total_seconds << " s");
+
+  // moveFromPCL would drop the polygons; fromPCL copies them.
+  pcl_msgs::PolygonMesh out;
+  pcl_conversions::fromPCL (mesh, out);
+  out.header = msg->header;
+  out.cloud.header = msg->header;
+  mesh_publisher_.publish (out);
+
+  pcl::PointCloud<pcl::PointXYZ> points;
+  pcl::fromPCLPointCloud2 (mesh.cloud, points);
+  visualization_msgs::Marker marker = triangleList (points, mesh.polygons);
+  marker.header = msg->header;
+  marker_publisher_.publish (marker);
+}
+
+} // namespace pcl_wrap_ros

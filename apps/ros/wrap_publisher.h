@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/wrap_parameters.h>
+
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+
+namespace pcl_wrap_ros
+{
+
+/** \brief Reads the wrap's parameters from \a private_nh (~delta, ~radius, ~radius_rel, ~mode,
+  * ~sinks, ~region, ~manifold, ~threads, ~weight_field, ~weight_scale), each defaulting to
+  * pcl_wrap::WrapParameters' own default. */
+pcl_wrap::WrapParameters
+readParameters (const ros::NodeHandle& private_nh);
+
+/** \brief The node's work, shared by the node and the nodelet: subscribes to "cloud"
+  * (sensor_msgs/PointCloud2), wraps each cloud and publishes "mesh" (pcl_msgs/PolygonMesh; its
+  * cloud is the input's points, followed by the copies of a manifold split) and "marker"
+  * (visualization_msgs/Marker, a TRIANGLE_LIST for RViz), both with the input's header. */
+class WrapPublisher
+{
+public:
+  WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private_nh);
+
+private:
+  void onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg);
+
+  pcl_wrap::WrapParameters parameters_;
+  ros::Publisher mesh_publisher_;
+  ros::Publisher marker_publisher_;
+  ros::Subscriber subscriber_;
+};
+
+} // namespace pcl_wrap_ros
