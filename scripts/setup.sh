@@ -13,8 +13,9 @@ PACKAGES=(
   # The ROS1 node and its test against a real roscore (Debian's ROS packages)
   libroscpp-dev libnodeletlib-dev libnodeletlib-tools libsensor-msgs-dev libpcl-conversions-dev
   libpcl-msgs-dev libvisualization-msgs-dev python3-roslaunch python3-rostopic rosout catkin
+  python3-catkin-pkg
   # Pictures: pcl_viewer and an X server without a display
-  pcl-tools xvfb xauth
+  pcl-tools xvfb xauth xdotool
 )
 
 missing=()
