@@ -14,5 +14,5 @@ scripts/build.sh
 CC=clang CXX=clang++ BUILD_DIR=build-sanitize scripts/build.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DPCL_WRAP_SANITIZE=address,undefined -DPCL_WRAP_BUILD_FUZZERS=ON -DPCL_WRAP_BUILD_BENCH=OFF -DPCL_WRAP_BUILD_ROS=OFF \
   -DPCL_WRAP_FUZZ_SECONDS="${PCL_WRAP_FUZZ_SECONDS:-60}"
-# The real-data, installed-package and ROS tests add nothing a sanitizer would see but time.
-(cd build-sanitize && ctest -j"$jobs" --output-on-failure -E "RealData|DownstreamConsumer|RosNode")
+# The real-data, installed-package, ROS and viewer tests add nothing a sanitizer would see but time.
+(cd build-sanitize && ctest -j"$jobs" --output-on-failure -E "RealData|DownstreamConsumer|RosNode|Viewer|Package")
