@@ -5,7 +5,7 @@
 // file), times and measures the peak memory of CGAL's triangulations alone (the floor any
 // Delaunay-based method pays) and of pcl_wrap, stage by stage. Each measurement runs in a
 // child process of its own, so each peak resident set size is its own.
-#include "point_file.h"
+#include "bench_points.h"
 
 #include <pcl_wrap/compute_wrap.h>
 
@@ -19,7 +19,6 @@
 #include <cstring>
 #include <functional>
 #include <iostream>
-#include <random>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -30,32 +29,6 @@ namespace
 
 using pcl_wrap::Point3;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-std::vector<Point3>
-makePoints (const std::string& shape, std::size_t n, unsigned seed)
-{
-  if (shape != "sphere" && shape != "cube" && shape != "torus")
-    return pcl_wrap::apps::readPoints (shape);
-  std::mt19937_64 random (seed);
-  std::normal_distribution<double> g;
-  std::uniform_real_distribution<double> u (-1.0, 1.0), angle (0.0, 2.0 * M_PI);
-  std::vector<Point3> p (n);
-  for (auto& q : p)
-    if (shape == "cube")
-      q = {u (random), u (random), u (random)};
-    else if (shape == "torus")
-    {
-      const double a = angle (random), b = angle (random);
-      q = {(1.0 + 0.4 * std::cos (b)) * std::cos (a), (1.0 + 0.4 * std::cos (b)) * std::sin (a), 0.4 * std::sin (b)};
-    }
-    else
-    {
-      const double x = g (random), y = g (random), z = g (random);
-      const double r = (1.0 + 1e-3 * u (random)) / std::sqrt (x * x + y * y + z * z);
-      q = {x * r, y * r, z * r};
-    }
-  return p;
-}
 
 struct Measurement
 {
@@ -109,7 +82,7 @@ main (int argc, char** argv)
   const std::string shape = argv[1];
   const std::size_t n = std::stoul (argv[2]);
   const unsigned seed = argc > 3 ? unsigned (std::stoul (argv[3])) : 1u;
-  const std::vector<Point3> points = makePoints (shape, n, seed);
+  const std::vector<Point3> points = pcl_wrap::bench::makePoints (shape, n, seed);
   // What the process holds before any measurement (the points, the program): subtracted from
   // nothing, shown so the peaks can be read against it.
   const Measurement baseline = measure ([] (Measurement&) {});

@@ -42,4 +42,9 @@ computeWrap (const std::vector<Point3>& points,
              const WrapParameters& parameters = WrapParameters (),
              const StageObserver& observer = StageObserver ());
 
+/** \brief The median distance from a point to its nearest neighbour (PCL's FLANN k-d tree): the
+  * spacing that WrapParameters::radius_rel is relative to. 0 for fewer than two points. */
+double
+medianSpacing (const std::vector<Point3>& points);
+
 } // namespace pcl_wrap

@@ -41,10 +41,6 @@ deleteSinksGlobally (Retraction& y, const WrapFiltration& order, const KeepGoing
   return not_principal;
 }
 
-/** \brief The median distance from a point to its nearest neighbour (PCL's FLANN k-d tree). */
-double
-medianSpacing (const std::vector<Point3>& positions);
-
 /** \brief The number of sinks and the largest sizes, from sinks in order, into \a stats. */
 void
 recordSinks (const WrapFiltration& order, WrapStatistics& stats);

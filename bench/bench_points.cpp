@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "bench_points.h"
+
+#include "point_file.h"
+
+#include <cmath>
+#include <random>
+
+namespace pcl_wrap::bench
+{
+
+std::vector<Point3>
+makePoints (const std::string& shape, std::size_t n, unsigned seed)
+{
+  if (shape != "sphere" && shape != "cube" && shape != "torus")
+    return pcl_wrap::apps::readPoints (shape);
+  std::mt19937_64 random (seed);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u (-1.0, 1.0), angle (0.0, 2.0 * M_PI);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+    if (shape == "cube")
+      q = {u (random), u (random), u (random)};
+    else if (shape == "torus")
+    {
+      const double a = angle (random), b = angle (random);
+      q = {(1.0 + 0.4 * std::cos (b)) * std::cos (a), (1.0 + 0.4 * std::cos (b)) * std::sin (a), 0.4 * std::sin (b)};
+    }
+    else
+    {
+      const double x = g (random), y = g (random), z = g (random);
+      const double r = (1.0 + 1e-3 * u (random)) / std::sqrt (x * x + y * y + z * z);
+      q = {x * r, y * r, z * r};
+    }
+  return p;
+}
+
+} // namespace pcl_wrap::bench

@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl_wrap::bench
+{
+
+/** \brief N points on a sphere (radius 1, 1e-3 radial noise), a torus (radii 1 and 0.4, uniform in
+  * angle) or in a cube ([-1, 1]^3), from \a seed; or the points of a file (N ignored). */
+std::vector<Point3>
+makePoints (const std::string& shape, std::size_t n, unsigned seed);
+
+} // namespace pcl_wrap::bench

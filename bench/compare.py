@@ -1,0 +1,217 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""pcl_wrap against the triangulation floor and every peer, on the same points in one run.
+
+usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--timeout 900]
+                        [--smoke] [--out BENCHMARK.md]
+
+For each dataset (sphere, torus, cube at each size; kitten, bunny, fandisk from libcgal-demo),
+runs every method in a process of its own (bench_peers, open3d_peer.py), then mesh_quality on
+its output, and writes the Markdown report with plots. Sizes in --large run only the floor and
+pcl_wrap. Needs the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data
+(scripts/fetch-data.sh)."""
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+BENCH = os.environ.get("PCL_WRAP_BENCH_DIR", os.path.join(ROOT, "build", "bench"))
+C_METHODS = ["floor_delaunay", "floor_regular", "pcl_wrap", "cgal_advancing_front", "cgal_alpha_wrap",
+             "cgal_alpha_shape", "pcl_concave_hull", "pcl_greedy_projection"]
+PY_METHODS = ["open3d_ball_pivoting", "open3d_alpha_shape"]
+FLOOR = {"floor_delaunay", "floor_regular"}
+LABEL = {"floor_delaunay": "CGAL Delaunay_triangulation_3 (floor)",
+         "floor_regular": "CGAL Regular_triangulation_3 (floor)", "pcl_wrap": "**pcl_wrap**",
+         "cgal_advancing_front": "CGAL Advancing Front", "cgal_alpha_wrap": "CGAL Alpha_wrap_3",
+         "cgal_alpha_shape": "CGAL Alpha_shape_3 (optimal alpha)", "pcl_concave_hull": "PCL ConcaveHull",
+         "pcl_greedy_projection": "PCL GreedyProjection", "open3d_ball_pivoting": "Open3D ball pivoting",
+         "open3d_alpha_shape": "Open3D alpha shape"}
+
+
+def run_method(method, source, n, work, timeout):
+    """One method on one dataset: its JSON line plus quality, or an error."""
+    mesh = os.path.join(work, method + ".obj")
+    points_xyz = os.path.join(work, "points.xyz")
+    if method in PY_METHODS:
+        cmd = ["/usr/bin/python3", os.path.join(HERE, "open3d_peer.py"), method, points_xyz, "--mesh", mesh]
+    else:
+        cmd = [os.path.join(BENCH, "bench_peers"), method, source, str(n), "1", "--mesh", mesh]
+    try:
+        done = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"method": method, "error": f"over {timeout} s"}
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[-1]
+        return {"method": method, "error": "failed: " + last[:120]}
+    result = json.loads(done.stdout.strip().splitlines()[-1])
+    if method not in FLOOR and result["triangles"] > 0 and os.path.exists(mesh):
+        reference = DATASET_REFERENCE.get(source)
+        spec = source if os.path.exists(source) else f"{source}:{n}:1"
+        q = subprocess.run([os.path.join(BENCH, "mesh_quality"), mesh, spec, reference or "none",
+                            "20000" if n <= 20000 else "200000"], capture_output=True, text=True, timeout=timeout)
+        if q.returncode == 0:
+            quality = json.loads(q.stdout.strip().splitlines()[-1])
+            if reference is None:
+                quality["chamfer"] = quality["hausdorff"] = None
+            result.update(quality)
+    if os.path.exists(mesh):
+        os.remove(mesh)
+    return result
+
+
+DATASET_REFERENCE = {"sphere": "sphere", "torus": "torus"}
+
+
+def datasets(args):
+    data = os.path.join(ROOT, "data", "fetched")
+    out = []
+    for n in args.sizes:
+        for shape in ("sphere", "torus", "cube"):
+            out.append((f"{shape} {n:,}", shape, n, True))
+    for n in args.large:
+        out.append((f"sphere {n:,}", "sphere", n, False))
+    if not args.smoke:
+        for name, file, reference in (("kitten (scan)", "kitten.xyz", "points"),
+                                      ("bunny (scan)", "bunny00.off", "bunny00.off"),
+                                      ("fandisk (CAD)", "fandisk.off", "fandisk.off")):
+            path = os.path.join(data, file)
+            DATASET_REFERENCE[path] = path if reference != "points" else "points"
+            out.append((name, path, 0, True))
+    return out
+
+
+def run_all(args):
+    rows = []
+    for name, source, n, with_peers in datasets(args):
+        with tempfile.TemporaryDirectory() as work:
+            # The points once, for the Python peers; the C++ ones rebuild the same from the seed.
+            subprocess.run([os.path.join(BENCH, "bench_peers"), "floor_delaunay", source, str(n), "1", "--points",
+                            os.path.join(work, "points.xyz")], check=True, capture_output=True)
+            methods = C_METHODS + PY_METHODS if with_peers else ["floor_delaunay", "floor_regular", "pcl_wrap"]
+            for method in methods:
+                result = run_method(method, source, n, work, args.timeout)
+                result["dataset"] = name
+                rows.append(result)
+                print(json.dumps(result), flush=True)
+    return rows
+
+
+def fmt(x, spec="{:.3g}"):
+    return "-" if x is None else spec.format(x)
+
+
+def report(rows, args):
+    machine = f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores"
+    try:
+        with open("/proc/meminfo") as f:
+            machine += f", {int(f.readline().split()[1]) // (1024 * 1024)} GiB"
+        with open("/proc/cpuinfo") as f:
+            model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "")
+        machine = f"{model}; " + machine
+    except OSError:
+        pass
+    lines = ["# Benchmarks", "",
+             "pcl_wrap against the triangulation floor and the peers a user would pick instead, on the same",
+             "points in one run, each method in a process of its own (time from points in memory to mesh in",
+             "memory, normals included where a method needs them; peak resident memory of that process).",
+             "", f"Machine: {machine}. Reproduce: `scripts/build.sh && scripts/fetch-data.sh && bench/compare.py "
+             f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "") + "`.",
+             "",
+             "Quality: Chamfer (mean of both directions) and Hausdorff distance between the output and the",
+             "reference surface (sphere, torus: analytic; bunny, fandisk: the reference mesh; kitten: the",
+             "scan's points), sampled by area, relative to the bounding box diagonal; share of input points",
+             "that are vertices of the output; watertight (every edge in exactly two triangles);",
+             "non-manifold edges and vertices; components; genus (closed manifolds only).", ""]
+    by_dataset = {}
+    for r in rows:
+        by_dataset.setdefault(r["dataset"], []).append(r)
+    for name, rs in by_dataset.items():
+        floor = next((r for r in rs if r["method"] == "floor_regular" and "seconds" in r), None)
+        lines += [f"## {name}", "",
+                  "| method | time (s) | × floor | peak MiB | triangles | Chamfer | Hausdorff | points on output | watertight | non-manifold edges / vertices | components | genus |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for r in rs:
+            if "error" in r:
+                lines.append(f"| {LABEL[r['method']]} | {r['error']} | | | | | | | | | | |")
+                continue
+            ratio = r["seconds"] / floor["seconds"] if floor else None
+            t = fmt(r["seconds"]) + (f" (normals {fmt(r['normal_seconds'])})" if r.get("normal_seconds") else "")
+            if r["method"] in FLOOR:
+                lines.append(f"| {LABEL[r['method']]} | {t} | {fmt(ratio, '{:.2f}')} | {r['peak_mib']:.0f} | | | | | | | | |")
+                continue
+            lines.append("| {} | {} | {} | {:.0f} | {} | {} | {} | {} | {} | {} | {} | {} |".format(
+                LABEL[r["method"]], t, fmt(ratio, "{:.2f}"), r["peak_mib"], r["triangles"], fmt(r.get("chamfer")),
+                fmt(r.get("hausdorff")), fmt(r.get("points_on_output"), "{:.1%}"),
+                "yes" if r.get("watertight") else "no", f"{r.get('nonmanifold_edges', '-')} / {r.get('nonmanifold_vertices', '-')}",
+                r.get("components", "-"), fmt(r.get("genus"), "{}")))
+        lines.append("")
+    return lines
+
+
+def plot(rows, directory):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    paths = []
+    for shape in ("sphere", "torus", "cube"):
+        series = {}
+        for r in rows:
+            if r["dataset"].startswith(shape + " ") and "seconds" in r:
+                series.setdefault(r["method"], []).append((r["points"], r["seconds"]))
+        if not series:
+            continue
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for method, pts in series.items():
+            pts.sort()
+            style = "-o" if method == "pcl_wrap" else ("--" if method in FLOOR else ":.")
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], style, label=LABEL[method].replace("**", ""),
+                    linewidth=2.5 if method == "pcl_wrap" else 1.2)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("points")
+        ax.set_ylabel("seconds")
+        ax.set_title(f"{shape}: time against number of points")
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+        path = os.path.join(directory, f"time_{shape}.png")
+        fig.tight_layout()
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        paths.append(path)
+    return paths
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--sizes", default="10000,100000,1000000")
+    parser.add_argument("--large", default="")
+    parser.add_argument("--timeout", type=int, default=900)
+    parser.add_argument("--smoke", action="store_true", help="a 500-point sphere, every method: checks the harness")
+    parser.add_argument("--out", default=os.path.join(ROOT, "BENCHMARK.md"))
+    args = parser.parse_args()
+    args.sizes = [500] if args.smoke else [int(s) for s in args.sizes.split(",") if s]
+    args.large = [] if args.smoke else [int(s) for s in args.large.split(",") if s]
+    rows = run_all(args)
+    if args.smoke:
+        bad = [r for r in rows if "error" in r or (r["method"] not in FLOOR and "chamfer" not in r)]
+        if bad:
+            sys.exit(f"compare.py --smoke: {bad}")
+        print("compare.py --smoke: every method ran and was measured")
+        return
+    with open(os.path.join(HERE, "results.json"), "w") as f:
+        json.dump(rows, f, indent=1)
+    plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
+    lines = report(rows, args)
+    lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
+    with open(args.out, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"wrote {args.out}")
+
+
+if __name__ == "__main__":
+    main()
