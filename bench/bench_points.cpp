@@ -4,6 +4,7 @@
 
 #include "point_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -34,6 +35,18 @@ makePoints (const std::string& shape, std::size_t n, unsigned seed)
       q = {x * r, y * r, z * r};
     }
   return p;
+}
+
+double
+boundingBoxDiagonal (const std::vector<Point3>& points)
+{
+  if (points.empty ())
+    return 0.0;
+  Point3 lo = points.front (), hi = points.front ();
+  for (const auto& q : points)
+    for (int i = 0; i < 3; ++i)
+      lo[i] = std::min (lo[i], q[i]), hi[i] = std::max (hi[i], q[i]);
+  return std::sqrt ((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
 } // namespace pcl_wrap::bench

@@ -15,4 +15,8 @@ namespace pcl_wrap::bench
 std::vector<Point3>
 makePoints (const std::string& shape, std::size_t n, unsigned seed);
 
+/** \brief The diagonal of the points' bounding box (0 for none). */
+double
+boundingBoxDiagonal (const std::vector<Point3>& points);
+
 } // namespace pcl_wrap::bench

@@ -3,7 +3,7 @@
 """pcl_wrap against the triangulation floor and every peer, on the same points in one run.
 
 usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--timeout 900]
-                        [--smoke] [--out BENCHMARK.md]
+                        [--all-shapes-up-to N] [--smoke] [--out BENCHMARK.md]
 
 For each dataset (sphere, torus, cube at each size; kitten, bunny, fandisk from libcgal-demo),
 runs every method in a process of its own (bench_peers, open3d_peer.py), then mesh_quality on
@@ -21,12 +21,13 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 BENCH = os.environ.get("PCL_WRAP_BENCH_DIR", os.path.join(ROOT, "build", "bench"))
-C_METHODS = ["floor_delaunay", "floor_regular", "pcl_wrap", "cgal_advancing_front", "cgal_alpha_wrap",
+C_METHODS = ["floor_delaunay", "floor_regular", "pcl_wrap", "pcl_wrap_front", "cgal_advancing_front", "cgal_alpha_wrap",
              "cgal_alpha_shape", "pcl_concave_hull", "pcl_greedy_projection"]
 PY_METHODS = ["open3d_ball_pivoting", "open3d_alpha_shape"]
 FLOOR = {"floor_delaunay", "floor_regular"}
 LABEL = {"floor_delaunay": "CGAL Delaunay_triangulation_3 (floor)",
          "floor_regular": "CGAL Regular_triangulation_3 (floor)", "pcl_wrap": "**pcl_wrap**",
+         "pcl_wrap_front": "**pcl_wrap** --radius-rel 4",
          "cgal_advancing_front": "CGAL Advancing Front", "cgal_alpha_wrap": "CGAL Alpha_wrap_3",
          "cgal_alpha_shape": "CGAL Alpha_shape_3 (optimal alpha)", "pcl_concave_hull": "PCL ConcaveHull",
          "pcl_greedy_projection": "PCL GreedyProjection", "open3d_ball_pivoting": "Open3D ball pivoting",
@@ -72,7 +73,8 @@ def datasets(args):
     out = []
     for n in args.sizes:
         for shape in ("sphere", "torus", "cube"):
-            out.append((f"{shape} {n:,}", shape, n, True))
+            if shape == "sphere" or n <= args.all_shapes_up_to:
+                out.append((f"{shape} {n:,}", shape, n, True))
     for n in args.large:
         out.append((f"sphere {n:,}", "sphere", n, False))
     if not args.smoke:
@@ -92,7 +94,7 @@ def run_all(args):
             # The points once, for the Python peers; the C++ ones rebuild the same from the seed.
             subprocess.run([os.path.join(BENCH, "bench_peers"), "floor_delaunay", source, str(n), "1", "--points",
                             os.path.join(work, "points.xyz")], check=True, capture_output=True)
-            methods = C_METHODS + PY_METHODS if with_peers else ["floor_delaunay", "floor_regular", "pcl_wrap"]
+            methods = C_METHODS + PY_METHODS if with_peers else ["floor_delaunay", "floor_regular", "pcl_wrap", "pcl_wrap_front"]
             for method in methods:
                 result = run_method(method, source, n, work, args.timeout)
                 result["dataset"] = name
@@ -120,7 +122,9 @@ def report(rows, args):
              "points in one run, each method in a process of its own (time from points in memory to mesh in",
              "memory, normals included where a method needs them; peak resident memory of that process).",
              "", f"Machine: {machine}. Reproduce: `scripts/build.sh && scripts/fetch-data.sh && bench/compare.py "
-             f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "") + "`.",
+             f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "")
+             + (f" --all-shapes-up-to {args.all_shapes_up_to}" if args.all_shapes_up_to < 10 ** 9 else "")
+             + f" --timeout {args.timeout}`.",
              "",
              "Quality: Chamfer (mean of both directions) and Hausdorff distance between the output and the",
              "reference surface (sphere, torus: analytic; bunny, fandisk: the reference mesh; kitten: the",
@@ -168,9 +172,9 @@ def plot(rows, directory):
         fig, ax = plt.subplots(figsize=(7, 4.5))
         for method, pts in series.items():
             pts.sort()
-            style = "-o" if method == "pcl_wrap" else ("--" if method in FLOOR else ":.")
+            style = "-o" if method.startswith("pcl_wrap") else ("--" if method in FLOOR else ":.")
             ax.plot([p[0] for p in pts], [p[1] for p in pts], style, label=LABEL[method].replace("**", ""),
-                    linewidth=2.5 if method == "pcl_wrap" else 1.2)
+                    linewidth=2.5 if method.startswith("pcl_wrap") else 1.2)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("points")
@@ -191,6 +195,8 @@ def main():
     parser.add_argument("--sizes", default="10000,100000,1000000")
     parser.add_argument("--large", default="")
     parser.add_argument("--timeout", type=int, default=900)
+    parser.add_argument("--all-shapes-up-to", type=int, default=10 ** 9,
+                        help="larger sizes run on the sphere only")
     parser.add_argument("--smoke", action="store_true", help="a 500-point sphere, every method: checks the harness")
     parser.add_argument("--out", default=os.path.join(ROOT, "BENCHMARK.md"))
     args = parser.parse_args()

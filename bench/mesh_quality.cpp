@@ -147,15 +147,6 @@ nearestDistances (const std::vector<Point3>& from, const std::vector<Point3>& to
   return {from.empty () ? 0.0 : sum / double (from.size ()), max};
 }
 
-double
-diagonal (const std::vector<Point3>& points)
-{
-  Point3 lo = points.front (), hi = points.front ();
-  for (const auto& q : points)
-    for (int i = 0; i < 3; ++i)
-      lo[i] = std::min (lo[i], q[i]), hi[i] = std::max (hi[i], q[i]);
-  return std::sqrt ((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
 
 /** The reference surface sampled with \a count points. */
 std::vector<Point3>
@@ -280,7 +271,7 @@ main (int argc, char** argv)
     on_output += used.count (single (p));
 
   // Distances.
-  const double diag = diagonal (input);
+  const double diag = pcl_wrap::bench::boundingBoxDiagonal (input);
   const std::vector<Point3> reference = referenceSamples (argv[3], input, samples);
   const std::vector<Point3> output = sampleSurface (mesh, samples, 11);
   double chamfer = -1, hausdorff = -1;

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "peers.h"
 
+#include "bench_points.h"
+
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Alpha_shape_3.h>
 #include <CGAL/Alpha_shape_cell_base_3.h>
@@ -51,17 +53,6 @@ pclCloud (const std::vector<Point3>& points)
   return cloud;
 }
 
-/** The bounding box diagonal. */
-double
-diagonal (const std::vector<Point3>& points)
-{
-  Point3 lo = points.front (), hi = points.front ();
-  for (const auto& q : points)
-    for (int i = 0; i < 3; ++i)
-      lo[i] = std::min (lo[i], q[i]), hi[i] = std::max (hi[i], q[i]);
-  return std::sqrt ((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 PeerOutput
 floorDelaunay (const std::vector<Point3>& points)
 {
@@ -98,6 +89,21 @@ wrap (const std::vector<Point3>& points)
   return out;
 }
 
+/** pcl_wrap wrapping tighter: front deletion of the sinks wider than 4 x the spacing. */
+PeerOutput
+wrapFront (const std::vector<Point3>& points)
+{
+  WrapParameters parameters;
+  parameters.keep_complex = false;
+  parameters.radius_rel = 4;
+  const WrapResult r = computeWrap (points, parameters);
+  PeerOutput out;
+  out.vertices = points;
+  out.triangles = r.surface.triangles;
+  out.note = "front deletion, radius-rel 4";
+  return out;
+}
+
 PeerOutput
 advancingFront (const std::vector<Point3>& points)
 {
@@ -117,7 +123,7 @@ alphaWrap (const std::vector<Point3>& points)
 {
   // The values of CGAL's own example: alpha = diagonal / 20, offset = diagonal / 600; and a
   // finer alpha = 10 x the spacing, closer to the points' detail, whichever is smaller.
-  const double diag = diagonal (points);
+  const double diag = boundingBoxDiagonal (points);
   const double alpha = std::min (diag / 20.0, 10.0 * pcl_wrap::medianSpacing (points)), offset = diag / 600.0;
   const auto p = cgalPoints (points);
   CGAL::Surface_mesh<K::Point_3> mesh;
@@ -260,7 +266,8 @@ peers ()
 {
   static const std::vector<std::pair<std::string, Peer>> all = {
       {"floor_delaunay", floorDelaunay},       {"floor_regular", floorRegular},
-      {"pcl_wrap", wrap},                      {"cgal_advancing_front", advancingFront},
+      {"pcl_wrap", wrap},                      {"pcl_wrap_front", wrapFront},
+      {"cgal_advancing_front", advancingFront},
       {"cgal_alpha_wrap", alphaWrap},          {"cgal_alpha_shape", alphaShape},
       {"pcl_concave_hull", concaveHull},       {"pcl_greedy_projection", greedyProjection}};
   return all;

@@ -26,7 +26,8 @@ struct PeerOutput
 
 using Peer = std::function<PeerOutput (const std::vector<Point3>&)>;
 
-/** Every method by name: floor_delaunay, floor_regular, pcl_wrap, cgal_advancing_front,
+/** Every method by name: floor_delaunay, floor_regular, pcl_wrap, pcl_wrap_front,
+  * cgal_advancing_front,
   * cgal_alpha_wrap, cgal_alpha_shape, pcl_concave_hull, pcl_greedy_projection. */
 const std::vector<std::pair<std::string, Peer>>&
 peers ();
