@@ -134,6 +134,7 @@ def report(rows, args):
     by_dataset = {}
     for r in rows:
         by_dataset.setdefault(r["dataset"], []).append(r)
+    lines += targets(rows, by_dataset)
     for name, rs in by_dataset.items():
         floor = next((r for r in rs if r["method"] == "floor_regular" and "seconds" in r), None)
         lines += [f"## {name}", "",
@@ -154,6 +155,35 @@ def report(rows, args):
                 "yes" if r.get("watertight") else "no", f"{r.get('nonmanifold_edges', '-')} / {r.get('nonmanifold_vertices', '-')}",
                 r.get("components", "-"), fmt(r.get("genus"), "{}")))
         lines.append("")
+    return lines
+
+
+def targets(rows, by_dataset):
+    """The issue's targets, read off the rows: ratios to the floor on the largest sphere with
+    peers, growth per point, and whether pcl_wrap is the fastest surface on each dataset."""
+    ok = lambda r: "seconds" in r
+    spheres = sorted({r["points"] for r in rows if r["dataset"].startswith("sphere ") and r["method"] == "pcl_wrap" and ok(r)})
+    lines = ["## Targets", ""]
+    if spheres:
+        lines += ["| sphere points | pcl_wrap (s) | regular triangulation (s) | time ratio (target ≤ 1.5) | memory ratio (target ≤ 2) | µs per point |",
+                  "|---|---|---|---|---|---|"]
+        for n in spheres:
+            rs = [r for r in rows if r["dataset"].startswith("sphere ") and r["points"] == n and ok(r)]
+            w = next(r for r in rs if r["method"] == "pcl_wrap")
+            f = next((r for r in rs if r["method"] == "floor_regular"), None)
+            if f:
+                lines.append(f"| {n:,} | {w['seconds']:.3g} | {f['seconds']:.3g} | {w['seconds'] / f['seconds']:.2f} "
+                             f"| {w['peak_mib'] / f['peak_mib']:.2f} | {1e6 * w['seconds'] / n:.1f} |")
+        lines.append("")
+    faster = []
+    for name, rs in by_dataset.items():
+        w = next((r for r in rs if r["method"] == "pcl_wrap" and ok(r)), None)
+        peers = [r for r in rs if r["method"] not in FLOOR and not r["method"].startswith("pcl_wrap") and ok(r)]
+        if w and peers:
+            beaten = [LABEL[r["method"]] for r in peers if r["seconds"] < w["seconds"]]
+            faster.append(f"| {name} | {'yes' if not beaten else 'no: ' + ', '.join(beaten)} |")
+    if faster:
+        lines += ["| dataset | pcl_wrap faster than every peer? |", "|---|---|"] + faster + [""]
     return lines
 
 
@@ -199,18 +229,24 @@ def main():
                         help="larger sizes run on the sphere only")
     parser.add_argument("--smoke", action="store_true", help="a 500-point sphere, every method: checks the harness")
     parser.add_argument("--out", default=os.path.join(ROOT, "BENCHMARK.md"))
+    parser.add_argument("--report-only", action="store_true", help="rewrite the report from bench/results.json")
     args = parser.parse_args()
     args.sizes = [500] if args.smoke else [int(s) for s in args.sizes.split(",") if s]
     args.large = [] if args.smoke else [int(s) for s in args.large.split(",") if s]
-    rows = run_all(args)
+    if args.report_only:
+        with open(os.path.join(HERE, "results.json")) as f:
+            rows = json.load(f)
+    else:
+        rows = run_all(args)
     if args.smoke:
         bad = [r for r in rows if "error" in r or (r["method"] not in FLOOR and "chamfer" not in r)]
         if bad:
             sys.exit(f"compare.py --smoke: {bad}")
         print("compare.py --smoke: every method ran and was measured")
         return
-    with open(os.path.join(HERE, "results.json"), "w") as f:
-        json.dump(rows, f, indent=1)
+    if not args.report_only:
+        with open(os.path.join(HERE, "results.json"), "w") as f:
+            json.dump(rows, f, indent=1)
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args)
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]

@@ -77,16 +77,21 @@ floorRegular (const std::vector<Point3>& points)
 }
 
 PeerOutput
-wrap (const std::vector<Point3>& points)
+wrapWith (const std::vector<Point3>& points, WrapParameters parameters, const std::string& note)
 {
-  WrapParameters parameters;
   parameters.keep_complex = false;
   const WrapResult r = computeWrap (points, parameters);
   PeerOutput out;
   out.vertices = points;
   out.triangles = r.surface.triangles;
-  out.note = "no parameters";
+  out.note = note;
   return out;
+}
+
+PeerOutput
+wrap (const std::vector<Point3>& points)
+{
+  return wrapWith (points, WrapParameters (), "no parameters");
 }
 
 /** pcl_wrap wrapping tighter: front deletion of the sinks wider than 4 x the spacing. */
@@ -94,14 +99,8 @@ PeerOutput
 wrapFront (const std::vector<Point3>& points)
 {
   WrapParameters parameters;
-  parameters.keep_complex = false;
   parameters.radius_rel = 4;
-  const WrapResult r = computeWrap (points, parameters);
-  PeerOutput out;
-  out.vertices = points;
-  out.triangles = r.surface.triangles;
-  out.note = "front deletion, radius-rel 4";
-  return out;
+  return wrapWith (points, parameters, "front deletion, radius-rel 4");
 }
 
 PeerOutput
