@@ -250,6 +250,9 @@ def main():
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args)
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
+    profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
+    if os.path.exists(profile):
+        lines += ["", open(profile).read().rstrip()]
     with open(args.out, "w") as f:
         f.write("\n".join(lines) + "\n")
     print(f"wrote {args.out}")
