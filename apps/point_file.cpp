@@ -169,49 +169,34 @@ readObj (const std::string& path)
   return points;
 }
 
-/** The first value of a numeric field of point i. */
-double
-valueOf (const pcl::PCLPointCloud2& cloud, const pcl::PCLPointField& field, std::size_t i)
-{
-  return readPointField (&cloud.data[i * cloud.point_step], field);
-}
-
 /** x, y, z (float or double) of every point of a PCL cloud, and the weight field's values. */
 PointFile
 pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path, const std::string& weight_field)
 {
-  const pcl::PCLPointField* xyz[3] = {nullptr, nullptr, nullptr};
-  const pcl::PCLPointField* weight = nullptr;
-  for (const auto& field : cloud.fields)
+  for (const char* axis : {"x", "y", "z"})
   {
-    for (int a = 0; a < 3; ++a)
-      if (field.name == std::string (1, "xyz"[a]))
-        xyz[a] = &field;
-    if (!weight_field.empty () && field.name == weight_field)
-      weight = &field;
+    const auto field = std::find_if (cloud.fields.begin (), cloud.fields.end (),
+                                     [&] (const pcl::PCLPointField& f) { return f.name == axis; });
+    if (field == cloud.fields.end () ||
+        (field->datatype != pcl::PCLPointField::FLOAT32 && field->datatype != pcl::PCLPointField::FLOAT64))
+      fail (path, std::string ("no float or double field ") + axis);
   }
-  for (int a = 0; a < 3; ++a)
-    if (!xyz[a] || (xyz[a]->datatype != pcl::PCLPointField::FLOAT32 && xyz[a]->datatype != pcl::PCLPointField::FLOAT64))
-      fail (path, std::string ("no float or double field ") + "xyz"[a]);
-  if (!weight_field.empty () && (!weight || weight->datatype < pcl::PCLPointField::INT8 ||
-                                 weight->datatype > pcl::PCLPointField::FLOAT64))
-    fail (path, "no numeric field '" + weight_field + "' for the weights");
-  for (const auto* field : {xyz[0], xyz[1], xyz[2], weight})
-    if (field && field->offset + pcl::getFieldSize (field->datatype) > cloud.point_step)
-      fail (path, "field " + field->name + " beyond the point size");
-  const std::size_t n = std::size_t (cloud.width) * cloud.height;
-  if (n * cloud.point_step > cloud.data.size ())
-    fail (path, "point data shorter than its header says");
-  PointFile file;
-  file.points.resize (n);
-  for (std::size_t i = 0; i < n; ++i)
+  try
   {
-    for (int a = 0; a < 3; ++a)
-      file.points[i][a] = valueOf (cloud, *xyz[a], i);
-    if (weight)
-      file.weights.push_back (valueOf (cloud, *weight, i));
+    const std::vector<double> x = readFieldValues (cloud, "x"), y = readFieldValues (cloud, "y"),
+                              z = readFieldValues (cloud, "z");
+    PointFile file;
+    file.points.resize (x.size ());
+    for (std::size_t i = 0; i < x.size (); ++i)
+      file.points[i] = {x[i], y[i], z[i]};
+    if (!weight_field.empty ())
+      file.weights = readFieldValues (cloud, weight_field);
+    return file;
   }
-  return file;
+  catch (const std::invalid_argument& e)
+  {
+    fail (path, e.what ());
+  }
 }
 
 /** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:

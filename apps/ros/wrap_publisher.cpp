@@ -70,22 +70,6 @@ WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private
 namespace
 {
 
-/** The weights of the points from \a field of \a cloud (empty: none). */
-std::vector<double>
-weightsOf (const pcl::PCLPointCloud2& cloud, const std::string& field)
-{
-  if (field.empty ())
-    return {};
-  const auto f = std::find_if (cloud.fields.begin (), cloud.fields.end (),
-                               [&] (const pcl::PCLPointField& g) { return g.name == field; });
-  if (f == cloud.fields.end ())
-    throw std::invalid_argument ("the cloud has no field '" + field + "'");
-  std::vector<double> weights (std::size_t (cloud.width) * cloud.height);
-  for (std::size_t i = 0; i < weights.size (); ++i)
-    weights[i] = pcl_wrap::readPointField (&cloud.data[i * cloud.point_step], *f);
-  return weights;
-}
-
 visualization_msgs::Marker
 triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pcl::Vertices>& polygons)
 {
@@ -123,7 +107,9 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   wrap.setWeightField ("");
   try
   {
-    wrap.setWeights (weightsOf (input, parameters_.weight_field));
+    // Checked against the message's own layout: a malformed message is an error, not a crash.
+    wrap.setWeights (parameters_.weight_field.empty () ? std::vector<double> ()
+                                                       : pcl_wrap::readFieldValues (input, parameters_.weight_field));
   }
   catch (const std::exception& e)
   {

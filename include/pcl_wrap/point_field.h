@@ -2,12 +2,16 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <pcl/PCLPointCloud2.h>
 #include <pcl/PCLPointField.h>
+#include <pcl/common/io.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace pcl_wrap
 {
@@ -36,6 +40,29 @@ readPointField (const std::uint8_t* point, const pcl::PCLPointField& field)
   case pcl::PCLPointField::FLOAT64: return as (double ());
   default: throw std::invalid_argument ("the field '" + field.name + "' is not numeric");
   }
+}
+
+/** \brief The first value of the numeric field \a name of every point of \a cloud, as doubles;
+  * checked first, so that a malformed cloud (a message, a file) is never read out of bounds.
+  * \throws std::invalid_argument when the field is missing or not numeric, lies beyond the point
+  *         size, or the data is shorter than width x height points */
+inline std::vector<double>
+readFieldValues (const pcl::PCLPointCloud2& cloud, const std::string& name)
+{
+  const auto field = std::find_if (cloud.fields.begin (), cloud.fields.end (),
+                                   [&] (const pcl::PCLPointField& f) { return f.name == name; });
+  if (field == cloud.fields.end () || field->datatype < pcl::PCLPointField::INT8 ||
+      field->datatype > pcl::PCLPointField::FLOAT64)
+    throw std::invalid_argument ("no numeric field '" + name + "'");
+  if (field->offset + pcl::getFieldSize (field->datatype) > cloud.point_step)
+    throw std::invalid_argument ("field " + name + " beyond the point size");
+  const std::size_t n = std::size_t (cloud.width) * cloud.height;
+  if (n * cloud.point_step > cloud.data.size ())
+    throw std::invalid_argument ("point data shorter than its header says");
+  std::vector<double> values (n);
+  for (std::size_t i = 0; i < n; ++i)
+    values[i] = readPointField (&cloud.data[i * cloud.point_step], *field);
+  return values;
 }
 
 } // namespace pcl_wrap

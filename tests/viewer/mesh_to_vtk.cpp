@@ -9,7 +9,6 @@
 #include <pcl/PolygonMesh.h>
 #include <pcl/io/ply_io.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -28,22 +27,15 @@ main (int argc, char** argv)
     std::fprintf (stderr, "mesh_to_vtk: cannot read a mesh from %s\n", argv[1]);
     return 1;
   }
-  const auto& cloud = mesh.cloud;
-  const auto field = [&] (const std::string& name) {
-    return *std::find_if (cloud.fields.begin (), cloud.fields.end (),
-                          [&] (const pcl::PCLPointField& f) { return f.name == name; });
-  };
-  const pcl::PCLPointField x = field ("x"), y = field ("y"), z = field ("z");
-  const std::size_t n = std::size_t (cloud.width) * cloud.height;
+  const std::vector<double> x = pcl_wrap::readFieldValues (mesh.cloud, "x"),
+                            y = pcl_wrap::readFieldValues (mesh.cloud, "y"),
+                            z = pcl_wrap::readFieldValues (mesh.cloud, "z");
   std::ofstream out (argv[2]);
   out.precision (17);
-  out << "# vtk DataFile Version 3.0\nthrough PCL's PLY reader\nASCII\nDATASET POLYDATA\nPOINTS " << n << " double\n";
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const std::uint8_t* p = &cloud.data[i * cloud.point_step];
-    out << pcl_wrap::readPointField (p, x) << ' ' << pcl_wrap::readPointField (p, y) << ' '
-        << pcl_wrap::readPointField (p, z) << '\n';
-  }
+  out << "# vtk DataFile Version 3.0\nthrough PCL's PLY reader\nASCII\nDATASET POLYDATA\nPOINTS " << x.size ()
+      << " double\n";
+  for (std::size_t i = 0; i < x.size (); ++i)
+    out << x[i] << ' ' << y[i] << ' ' << z[i] << '\n';
   out << "POLYGONS " << mesh.polygons.size () << ' ' << 4 * mesh.polygons.size () << '\n';
   for (const auto& polygon : mesh.polygons)
     out << "3 " << polygon.vertices[0] << ' ' << polygon.vertices[1] << ' ' << polygon.vertices[2] << '\n';
