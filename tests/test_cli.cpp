@@ -3,7 +3,9 @@
 //
 // The pcl_wrap command-line tool, run as a user runs it: every input and output format, the
 // JSON files, and one clear error line with no output for every malformed input.
+#include "support/pcl_mesh.h"
 #include "support/samplers.h"
+#include "support/topology.h"
 
 #include <pcl_wrap/compute_wrap.h>
 
@@ -18,7 +20,6 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <sys/stat.h>
 
@@ -316,25 +317,15 @@ TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
       ASSERT_GT (pcl::io::loadPolygonFileVTK (DIR + "manifold.vtk", mesh), 0);
     const std::size_t vertices = std::size_t (mesh.cloud.width) * mesh.cloud.height;
     EXPECT_GT (vertices, torus.size ()) << "copies follow the input points";
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    for (const auto& polygon : mesh.polygons)
-    {
-      ASSERT_EQ (polygon.vertices.size (), 3u);
-      for (auto v : polygon.vertices)
-        ASSERT_LT (std::size_t (v), vertices);
-      triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
-                            std::uint32_t (polygon.vertices[2])});
-    }
-    // Every edge in exactly two triangles, once each way.
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+    const std::vector<Triangle> triangles = trianglesOf (mesh.polygons);
+    ASSERT_EQ (triangles.size (), mesh.polygons.size ());
     for (const auto& t : triangles)
-      for (int i = 0; i < 3; ++i)
-        ++directed[{t[i], t[(i + 1) % 3]}];
-    for (const auto& [e, count] : directed)
-    {
-      EXPECT_EQ (count, 1);
-      EXPECT_EQ (directed.count ({e.second, e.first}), 1u);
-    }
+      for (auto v : t)
+        ASSERT_LT (std::size_t (v), vertices);
+    // Every edge in exactly two triangles, once each way, every vertex's triangles one fan.
+    const SurfaceReport s = describeSurface (triangles);
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_TRUE (s.consistently_oriented);
     writeText (DIR + "copies.py", "import json, sys\n"
                                   "m = json.load(open(sys.argv[1]))['manifold']\n"
                                   "assert m['pinch_edges_split'] > 0 and len(m['copies']) == int(sys.argv[2]) - 200, m\n");

@@ -3,6 +3,7 @@
 //
 // pcl_wrap::Wrap as a PCL stage: NaNs and setIndices in, a PolygonMesh indexing the input cloud
 // out, through PCL's PLY writer and reader.
+#include "support/pcl_mesh.h"
 #include "support/samplers.h"
 #include "support/topology.h"
 
@@ -56,19 +57,15 @@ TEST (PclWrap, CloudWithNansAndIndicesToPolygonMeshAndBackThroughPly)
   EXPECT_EQ (mesh.polygons.size (), stats.w_triangles);
   std::set<pcl::index_t> selected (indices->begin (), indices->end ());
   std::set<std::uint32_t> used;
-  std::vector<Triangle> triangles;
-  for (const auto& polygon : mesh.polygons)
-  {
-    ASSERT_EQ (polygon.vertices.size (), 3u);
-    for (auto v : polygon.vertices)
+  const std::vector<Triangle> triangles = trianglesOf (mesh.polygons);
+  ASSERT_EQ (triangles.size (), mesh.polygons.size ());
+  for (const auto& t : triangles)
+    for (auto v : t)
     {
       ASSERT_TRUE (selected.count (v)) << "polygon uses an unselected point";
       ASSERT_TRUE (std::isfinite ((*cloud)[v].x)) << "polygon uses a NaN point";
       used.insert (v);
     }
-    triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
-                          std::uint32_t (polygon.vertices[2])});
-  }
   EXPECT_EQ (used.size (), indices->size () - 3); // a sphere: every finite selected point on W
   EXPECT_TRUE (describeSurface (triangles).closed_manifold);
 
@@ -202,14 +199,10 @@ TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
     EXPECT_EQ (copy.r, original.r);
     EXPECT_EQ (copy.g, original.g);
   }
-  std::vector<Triangle> triangles;
-  for (const auto& polygon : mesh.polygons)
-  {
-    for (auto v : polygon.vertices)
+  const std::vector<Triangle> triangles = trianglesOf (mesh.polygons);
+  for (const auto& t : triangles)
+    for (auto v : t)
       ASSERT_LT (std::size_t (v), out.size ());
-    triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
-                          std::uint32_t (polygon.vertices[2])});
-  }
   const SurfaceReport s = describeSurface (triangles);
   EXPECT_TRUE (s.closed_manifold);
   EXPECT_TRUE (s.consistently_oriented);
@@ -236,11 +229,7 @@ TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
   pcl::PolygonMesh opened;
   local.reconstruct (opened);
   EXPECT_GT (local.getStatistics ().sinks_deleted, 0u);
-  std::vector<Triangle> opened_triangles;
-  for (const auto& polygon : opened.polygons)
-    opened_triangles.push_back ({std::uint32_t (polygon.vertices[0]), std::uint32_t (polygon.vertices[1]),
-                                 std::uint32_t (polygon.vertices[2])});
-  const SurfaceReport o = describeSurface (opened_triangles);
+  const SurfaceReport o = describeSurface (trianglesOf (opened.polygons));
   EXPECT_TRUE (o.closed_manifold);
   EXPECT_EQ (o.euler, 0);
 }

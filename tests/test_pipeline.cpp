@@ -5,7 +5,7 @@
 // pcl_wrap -> PLY, on a real scan and on an organised cloud with NaNs; its mesh equals the
 // library's on the same filtered cloud.
 #include "point_file.h"
-#include "support/topology.h"
+#include "support/pcl_mesh.h"
 
 #include <pcl_wrap/wrap.h>
 
@@ -50,15 +50,6 @@ libraryTriangles (const Cloud::Ptr& cloud)
   return mesh.polygons.size ();
 }
 
-std::vector<Triangle>
-trianglesOf (const pcl::PolygonMesh& mesh)
-{
-  std::vector<Triangle> t;
-  for (const auto& p : mesh.polygons)
-    t.push_back ({std::uint32_t (p.vertices[0]), std::uint32_t (p.vertices[1]), std::uint32_t (p.vertices[2])});
-  return t;
-}
-
 TEST (Pipeline, ScanThroughVoxelGridToPly)
 {
   auto bunny = pcl::make_shared<Cloud> ();
@@ -74,7 +65,7 @@ TEST (Pipeline, ScanThroughVoxelGridToPly)
   ASSERT_LT (thinned->size (), bunny->size ());
   EXPECT_EQ (std::size_t (mesh.cloud.width) * mesh.cloud.height, thinned->size ());
   EXPECT_EQ (mesh.polygons.size (), libraryTriangles (thinned));
-  const SurfaceReport s = describeSurface (trianglesOf (mesh));
+  const SurfaceReport s = describeSurface (trianglesOf (mesh.polygons));
   EXPECT_TRUE (s.closed_manifold);
   EXPECT_EQ (s.components, 1u);
   EXPECT_EQ (s.euler, 2) << "the bunny stays a sphere";
