@@ -36,24 +36,6 @@ gather (const SimplicialComplex& complex, int k, SimplexId s, unsigned mask, std
   return n;
 }
 
-/** The local vertices of (k, s) with lambda_i > 0: lambda_i < 0 iff p_i is inside the smallest
-  * orthosphere of the facet opposite p_i (never zero: ties are perturbed). */
-unsigned
-positiveBarycentric (const SimplicialComplex& complex, const PowerPredicates& predicates, int k, SimplexId s)
-{
-  if (k == 1 && predicates.uniformWeights ())
-    return fullMask (1); // the midpoint
-  unsigned positive = 0;
-  for (int i = 0; i <= k; ++i)
-  {
-    std::uint32_t facet[3];
-    const int n = gather (complex, k, s, fullMask (k) & ~(1u << i), facet);
-    if (!predicates.insideSmallestOrthosphere (facet, n, complex.vertex (k, s, i)))
-      positive |= 1u << i;
-  }
-  return positive;
-}
-
 } // namespace
 
 Classification
@@ -70,37 +52,44 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   if (d <= 0)
     return c; // no simplex but a lone vertex: a sink
 
-  // Attachment: some link vertex inside the smallest orthosphere. The link vertices of a face
-  // are the opposite vertices of its cofaces one dimension up, so testing every facet of every
-  // simplex against the vertex opposite it asks each (face, link vertex) question exactly once:
-  // the same questions whatever the number of threads.
+  // One question per (simplex, local vertex i): is p_i inside the smallest orthosphere of the
+  // facet opposite it? Its answer serves twice. For the facet it is attachment (the link
+  // vertices of a face are the opposite vertices of its cofaces one dimension up, so every
+  // (face, link vertex) pair is asked exactly once, whatever the number of threads). For the
+  // simplex it is the sign of a barycentric coordinate: lambda_i < 0 iff the answer is yes (never
+  // zero: ties are perturbed). The answers wait in lowest_successor until the classes are known.
   std::array<std::vector<std::atomic<std::uint8_t>>, 3> attached;
   for (int k = 0; k < d; ++k)
     attached[k] = std::vector<std::atomic<std::uint8_t>> (complex.size (k));
+  // With equal weights no point is inside the smallest orthosphere of another single point
+  // (that needs |p - q|^2 < 0): edges ask nothing, and their midpoint is their centre.
   const bool uniform = predicates.uniformWeights ();
   for (int m = uniform ? 2 : 1; m <= d; ++m)
     forEach (complex.size (m), [&] (SimplexId s) {
+      unsigned inside = 0;
       for (int i = 0; i <= m; ++i)
       {
         const unsigned mask = fullMask (m) & ~(1u << i);
         std::uint32_t sphere[3];
         const int n = gather (complex, m, s, mask, sphere);
         if (predicates.insideSmallestOrthosphere (sphere, n, complex.vertex (m, s, i)))
+        {
+          inside |= 1u << i;
           attached[m - 1][complex.face (m, s, mask).id].store (1, std::memory_order_relaxed);
+        }
       }
+      c.lowest_successor[m][s] = static_cast<std::uint8_t> (inside);
     });
 
   for (int k = 1; k <= d; ++k)
     forEach (complex.size (k), [&] (SimplexId s) {
+      const unsigned positive = fullMask (k) & ~unsigned (c.lowest_successor[k][s]);
+      c.lowest_successor[k][s] = 0;
       if (k < d && attached[k][s].load (std::memory_order_relaxed))
-      {
         c.classes[k][s] = SimplexClass::equivocal;
-        return;
-      }
-      const unsigned positive = positiveBarycentric (complex, predicates, k, s);
-      if (positive == 0)
+      else if (positive == 0)
         throw std::logic_error ("classify: no positive barycentric coordinate");
-      if (positive != fullMask (k))
+      else if (positive != fullMask (k))
       {
         c.classes[k][s] = SimplexClass::confident;
         c.lowest_successor[k][s] = static_cast<std::uint8_t> (positive);
