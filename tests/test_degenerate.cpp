@@ -145,10 +145,12 @@ TEST (Degenerate, OutputDoesNotDependOnTheOrderOfThePoints)
 
 TEST (Degenerate, OutputDoesNotChangeFromRunToRunOrWithThreads)
 {
+  // Over 20000 points, so that the triangulation is built by parallel insertion (when there
+  // is more than one thread), on a grid full of cospherical ties.
   const auto points = [] {
-    auto p = gridSample (12, 12, 12);
+    auto p = gridSample (28, 28, 28);
     for (const auto& q : sphereSample (3000, 5, 0.02))
-      p.push_back ({5.5 + 5 * q[0], 5.5 + 5 * q[1], 5.5 + 5 * q[2]});
+      p.push_back ({13.5 + 13 * q[0], 13.5 + 13 * q[1], 13.5 + 13 * q[2]});
     return p;
   }();
   WrapParameters parameters;

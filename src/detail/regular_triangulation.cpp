@@ -5,6 +5,7 @@
 #include "cgal_kernel.h"
 
 #include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Spatial_lock_grid_3.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -12,8 +13,15 @@
 #include <CGAL/Hilbert_policy_tags.h>
 #include <CGAL/property_map.h>
 
-#include <numeric>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/scalable_allocator.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <optional>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -28,24 +36,132 @@ using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<
 using CellBase = CGAL::Triangulation_cell_base_with_info_3<
     std::uint32_t, Kernel,
     CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
-using Regular = CGAL::Regular_triangulation_3<Kernel, Tds>;
+// The parallel data structure; insertion runs on all threads when a lock grid is given.
+using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase, CGAL::Parallel_tag>;
+using LockGrid = CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>;
+using Regular = CGAL::Regular_triangulation_3<Kernel, Tds, LockGrid>;
 
-} // namespace
+// Below this many points the threads would mostly wait on each other's locks.
+constexpr std::size_t PARALLEL_INSERTION_MIN_POINTS = 20000;
+// Lock grid cells per axis (CGAL's examples use 50; more cells, fewer conflicts).
+constexpr int LOCK_GRID_CELLS = 50;
+
+template <class F>
+void
+forEach (std::size_t n, const F& f)
+{
+  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 4096), [&] (const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin (); i != r.end (); ++i)
+      f (i);
+  });
+}
+
+/** The even permutation of a tetrahedron's local vertices that puts its smallest vertex id
+  * first and the next smallest second: one canonical, still positively oriented, order. */
+std::array<int, 4>
+canonicalOrder (const std::uint32_t* v)
+{
+  std::array<int, 4> p = {0, 1, 2, 3};
+  const int low = static_cast<int> (std::min_element (v, v + 4) - v);
+  // The even permutations that move `low` to the front: swap it with 0, and two other slots.
+  if (low != 0)
+  {
+    std::swap (p[0], p[low]);
+    const int a = low == 1 ? 2 : 1, b = low == 3 ? 2 : 3;
+    std::swap (p[a], p[b]);
+  }
+  // Rotate the last three (an even permutation) until the smallest of them is second.
+  while (v[p[1]] > v[p[2]] || v[p[1]] > v[p[3]])
+    std::rotate (p.begin () + 1, p.begin () + 2, p.end ());
+  return p;
+}
+
+/** The finite tetrahedra of \a rt into \a t, in an order and with local vertex orders that
+  * depend only on the vertex ids \a id gives: sorted by their vertex sets, each listed by
+  * canonicalOrder. A parallel insertion leaves CGAL's cells in an order that depends on thread
+  * timing; this keeps every later stage, and so every result, the same on any number of
+  * threads. Ordering by lowest vertex along the Hilbert curve also keeps the tetrahedra of a
+  * neighbourhood together. */
+template <class Id>
+void
+extractTetrahedra (const Regular& rt, const Id& id, Triangulation& t)
+{
+  std::vector<Regular::Cell_handle> cells;
+  cells.reserve (rt.tds ().number_of_cells ());
+  for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
+    cells.push_back (c);
+  const std::size_t n = cells.size ();
+
+  std::vector<std::uint32_t> canonical (4 * n);
+  std::vector<std::array<std::uint8_t, 4>> local (n); // canonical slot -> CGAL's local index
+  forEach (n, [&] (std::size_t j) {
+    std::uint32_t v[4];
+    for (int i = 0; i < 4; ++i)
+      v[i] = id (cells[j]->vertex (i));
+    const std::array<int, 4> p = canonicalOrder (v);
+    for (int i = 0; i < 4; ++i)
+    {
+      canonical[4 * j + i] = v[p[i]];
+      local[j][i] = static_cast<std::uint8_t> (p[i]);
+    }
+  });
+
+  // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
+  const std::size_t num_vertices = t.point_of_vertex.size ();
+  std::vector<std::size_t> begin (num_vertices + 1, 0);
+  for (std::size_t j = 0; j < n; ++j)
+    ++begin[canonical[4 * j] + 1];
+  std::partial_sum (begin.begin (), begin.end (), begin.begin ());
+  std::vector<std::uint32_t> order (n);
+  {
+    std::vector<std::size_t> next (begin.begin (), begin.end () - 1);
+    for (std::size_t j = 0; j < n; ++j)
+      order[next[canonical[4 * j]]++] = static_cast<std::uint32_t> (j);
+  }
+  const auto key = [&] (std::uint32_t j) {
+    const std::uint32_t* v = &canonical[4 * std::size_t (j)];
+    return std::array<std::uint32_t, 3>{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])};
+  };
+  forEach (num_vertices, [&] (std::size_t a) {
+    std::sort (order.begin () + begin[a], order.begin () + begin[a + 1],
+               [&] (std::uint32_t x, std::uint32_t y) { return key (x) < key (y); });
+  });
+
+  forEach (n, [&] (std::size_t r) { cells[order[r]]->info () = static_cast<std::uint32_t> (r); });
+  t.top_simplices.resize (4 * n);
+  t.neighbours.resize (4 * n);
+  forEach (n, [&] (std::size_t r) {
+    const std::uint32_t j = order[r];
+    for (int i = 0; i < 4; ++i)
+    {
+      t.top_simplices[4 * r + i] = canonical[4 * std::size_t (j) + i];
+      const auto across = cells[j]->neighbor (local[j][i]);
+      t.neighbours[4 * r + i] = rt.is_infinite (across) ? NO_NEIGHBOUR : across->info ();
+    }
+  });
+}
 
 Triangulation
-triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights)
+triangulateWithCgal (const std::vector<Point3>& positions, const std::vector<double>& weights)
 {
   std::vector<std::pair<WeightedPoint, std::uint32_t>> input;
   input.reserve (positions.size ());
+  CGAL::Bbox_3 box;
   for (std::uint32_t i = 0; i < positions.size (); ++i)
   {
     const Point3& p = positions[i];
     input.emplace_back (WeightedPoint (BarePoint (p[0], p[1], p[2]), weights[i]), i);
+    box += input.back ().first.bbox ();
   }
-  Regular rt;
+  const bool parallel =
+      positions.size () >= PARALLEL_INSERTION_MIN_POINTS && tbb::this_task_arena::max_concurrency () > 1;
+  std::optional<LockGrid> locks;
+  if (parallel)
+    locks.emplace (box, LOCK_GRID_CELLS);
+  Regular rt (Kernel (), parallel ? &*locks : nullptr);
   rt.insert (input.begin (), input.end ()); // spatially sorted insertion
   input = {};
+  rt.set_lock_data_structure (nullptr);
 
   Triangulation t;
   t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
@@ -60,8 +176,8 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   std::vector<std::uint32_t> curve (positions.size ());
   std::iota (curve.begin (), curve.end (), 0u);
   using ByIndex = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<BarePoint>::type>;
-  CGAL::Hilbert_sort_3<ByIndex, CGAL::Hilbert_sort_median_policy> (ByIndex (CGAL::make_property_map (bare.data ()))) (
-      curve.begin (), curve.end ());
+  CGAL::Hilbert_sort_3<ByIndex, CGAL::Hilbert_sort_median_policy, CGAL::Parallel_tag> (
+      ByIndex (CGAL::make_property_map (bare.data ()))) (curve.begin (), curve.end ());
   bare = {};
 
   constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
@@ -83,21 +199,8 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   switch (t.dimension)
   {
   case 3:
-  {
-    std::uint32_t cells = 0;
-    for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
-      c->info () = cells++;
-    top.reserve (4 * std::size_t (cells));
-    t.neighbours.reserve (4 * std::size_t (cells));
-    for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
-      for (int i = 0; i < 4; ++i)
-      {
-        top.push_back (id (c->vertex (i)));
-        const auto n = c->neighbor (i);
-        t.neighbours.push_back (rt.is_infinite (n) ? NO_NEIGHBOUR : n->info ());
-      }
+    extractTetrahedra (rt, id, t);
     break;
-  }
   case 2:
     for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
       for (int i = 0; i < 3; ++i)
@@ -116,6 +219,18 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   default:
     break;
   }
+  return t;
+}
+
+} // namespace
+
+Triangulation
+triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights)
+{
+  Triangulation t = triangulateWithCgal (positions, weights);
+  // The parallel triangulation allocates through TBB's allocator, which keeps freed memory for
+  // reuse; give it back so that the later stages do not sit on top of it.
+  scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
   return t;
 }
 
