@@ -2,7 +2,11 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "simplicial_complex.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace pcl_wrap::detail
@@ -14,40 +18,60 @@ namespace
 constexpr int TET_EDGE[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr int EDGE_SLOT[16] = {-1, -1, -1, 0, -1, 1, 3, -1, -1, 2, 4, -1, 5, -1, -1, -1};
 
+template <class F>
+void
+forEach (std::size_t n, const F& f)
+{
+  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 4096), [&] (const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin (); i != r.end (); ++i)
+      f (i);
+  });
+}
+
 /** Faces of one dimension, bucketed by their lowest vertex: a face is found by a binary search
-  * among the few faces of its lowest vertex, and its id is its position in the table. */
+  * among the few faces of its lowest vertex, and its id is its position in the table. Built in
+  * parallel; the table depends only on the set of faces, not on the threads. */
 template <class Key>
 class FaceTable
 {
 public:
-  /** \a each(emit) calls emit(lowest vertex, key of the other vertices) once per face instance. */
+  /** \a each(i, emit) calls emit(lowest vertex, key of the other vertices) for the face
+    * instances of top simplex \a i. */
   template <class Enumerate>
-  FaceTable (std::uint32_t num_vertices, const Enumerate& each)
+  FaceTable (std::uint32_t num_vertices, std::size_t num_top, const Enumerate& each)
     : begin_ (num_vertices + 1, 0)
   {
-    each ([&] (std::uint32_t a, Key) { ++begin_[a + 1]; });
+    std::vector<std::atomic<std::size_t>> fill (num_vertices + 1);
+    forEach (num_top, [&] (std::size_t i) {
+      each (i, [&] (std::uint32_t a, Key) { fill[a + 1].fetch_add (1, std::memory_order_relaxed); });
+    });
     for (std::uint32_t a = 0; a < num_vertices; ++a)
-      begin_[a + 1] += begin_[a];
+      begin_[a + 1] = begin_[a] + fill[a + 1].load (std::memory_order_relaxed);
     keys_.resize (begin_[num_vertices]);
-    std::vector<std::size_t> next (begin_.begin (), begin_.end () - 1);
-    each ([&] (std::uint32_t a, Key k) { keys_[next[a]++] = k; });
-
-    std::size_t out = 0;
     for (std::uint32_t a = 0; a < num_vertices; ++a)
-    {
+      fill[a].store (begin_[a], std::memory_order_relaxed);
+    forEach (num_top, [&] (std::size_t i) {
+      each (i, [&] (std::uint32_t a, Key k) { keys_[fill[a].fetch_add (1, std::memory_order_relaxed)] = k; });
+    });
+
+    // Sort and deduplicate each bucket in place, then close the gaps.
+    std::vector<std::size_t> unique (num_vertices + 1, 0);
+    forEach (num_vertices, [&] (std::size_t a) {
       auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
       std::sort (first, last);
-      last = std::unique (first, last);
-      begin_[a] = out;
-      out = std::move (first, last, keys_.begin () + out) - keys_.begin ();
-    }
-    begin_[num_vertices] = out;
-    keys_.resize (out);
-    keys_.shrink_to_fit ();
+      unique[a + 1] = static_cast<std::size_t> (std::unique (first, last) - first);
+    });
+    for (std::uint32_t a = 0; a < num_vertices; ++a)
+      unique[a + 1] += unique[a];
+    std::vector<Key> packed (unique[num_vertices]);
+    forEach (num_vertices, [&] (std::size_t a) {
+      std::copy_n (keys_.begin () + begin_[a], unique[a + 1] - unique[a], packed.begin () + unique[a]);
+    });
+    keys_ = std::move (packed);
+    begin_ = std::move (unique);
   }
 
   std::size_t size () const { return keys_.size (); }
-  std::uint32_t numVertices () const { return static_cast<std::uint32_t> (begin_.size () - 1); }
   std::size_t begin (std::uint32_t a) const { return begin_[a]; }
   std::size_t end (std::uint32_t a) const { return begin_[a + 1]; }
   Key key (std::size_t f) const { return keys_[f]; }
@@ -102,22 +126,22 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
 
   // dimension 2 or 3: the edges (and, in 3, the triangles) are the faces of the top simplices.
   const int d = dimension;
-  const FaceTable<std::uint32_t> edges (num_vertices, [&] (auto emit) {
-    for (std::size_t t = 0; t < num_top; ++t)
-      for (int i = 0; i <= d; ++i)
-        for (int j = i + 1; j <= d; ++j)
-        {
-          std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
-          emit (std::min (a, b), std::max (a, b));
-        }
+  const FaceTable<std::uint32_t> edges (num_vertices, num_top, [&] (std::size_t t, auto emit) {
+    for (int i = 0; i <= d; ++i)
+      for (int j = i + 1; j <= d; ++j)
+      {
+        std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
+        emit (std::min (a, b), std::max (a, b));
+      }
   });
-  vertices_[1].reserve (2 * edges.size ());
-  for (std::uint32_t a = 0; a < num_vertices; ++a)
+  vertices_[1].resize (2 * edges.size ());
+  forEach (num_vertices, [&] (std::size_t a) {
     for (std::size_t f = edges.begin (a); f < edges.end (a); ++f)
     {
-      vertices_[1].push_back (a);
-      vertices_[1].push_back (edges.key (f));
+      vertices_[1][2 * f] = static_cast<std::uint32_t> (a);
+      vertices_[1][2 * f + 1] = edges.key (f);
     }
+  });
   const auto edge_id = [&] (std::uint32_t a, std::uint32_t b) {
     return edges.find (std::min (a, b), std::max (a, b));
   };
@@ -131,22 +155,32 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
   else
   {
     // A triangle is named once, by the first of its two tetrahedra (or its only one, on the
-    // hull), and the tetrahedron across learns its name through the neighbour relation.
+    // hull), and the tetrahedron across learns its name through the neighbour relation. A
+    // prefix sum over the tetrahedra gives each its first triangle id.
     if (neighbours.size () != top.size ())
       throw std::invalid_argument ("SimplicialComplex: tetrahedra need their neighbours");
+    const auto names = [&] (std::size_t t, int i) {
+      const std::uint32_t u = neighbours[4 * t + i];
+      return u == ~std::uint32_t (0) || u > t;
+    };
+    std::vector<SimplexId> first_triangle (num_top + 1, 0);
+    for (std::size_t t = 0; t < num_top; ++t)
+      first_triangle[t + 1] = first_triangle[t] + names (t, 0) + names (t, 1) + names (t, 2) + names (t, 3);
+    vertices_[2].resize (3 * std::size_t (first_triangle[num_top]));
     tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
     tet_edges_.resize (6 * num_top);
-    for (std::size_t t = 0; t < num_top; ++t)
-    {
+    forEach (num_top, [&] (std::size_t t) {
       const std::uint32_t* v = &top[4 * t];
+      SimplexId next = first_triangle[t];
       for (int i = 0; i < 4; ++i)
       {
-        if (tet_triangles_[4 * t + i] != NO_SIMPLEX)
+        if (!names (t, i))
           continue;
-        const SimplexId f = static_cast<SimplexId> (vertices_[2].size () / 3);
+        const SimplexId f = next++;
         std::uint32_t a = v[(i + 1) % 4], b = v[(i + 2) % 4], c = v[(i + 3) % 4];
         sort3 (a, b, c);
-        vertices_[2].insert (vertices_[2].end (), {a, b, c});
+        std::uint32_t* out = &vertices_[2][3 * std::size_t (f)];
+        out[0] = a, out[1] = b, out[2] = c;
         tet_triangles_[4 * t + i] = f;
         const std::uint32_t u = neighbours[4 * t + i];
         if (u == ~std::uint32_t (0))
@@ -160,19 +194,20 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       }
       for (int e = 0; e < 6; ++e)
         tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);
-    }
+    });
+    if (std::find (tet_triangles_.begin (), tet_triangles_.end (), NO_SIMPLEX) != tet_triangles_.end ())
+      throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
     vertices_[3] = std::move (top);
   }
 
   const std::size_t num_triangles = size (2);
   triangle_edges_.resize (3 * num_triangles);
-  for (std::size_t t = 0; t < num_triangles; ++t)
-  {
+  forEach (num_triangles, [&] (std::size_t t) {
     const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
     triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
     triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
     triangle_edges_[3 * t + 2] = edge_id (v[0], v[1]);
-  }
+  });
 }
 
 Simplex
