@@ -16,6 +16,8 @@ PACKAGES=(
   python3-catkin-pkg
   # Pictures: pcl_viewer and an X server without a display
   pcl-tools xvfb xauth xdotool
+  # The benchmark's peers from Python (Open3D's ball pivoting and alpha shape) and its plots
+  python3-open3d python3-matplotlib
 )
 
 missing=()
