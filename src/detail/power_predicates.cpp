@@ -35,6 +35,100 @@ boundedSide (const WeightedPoint* const* s, int n, const WeightedPoint& q)
   }
 }
 
+// The static filters below trust double arithmetic only when every non-zero coordinate
+// difference lies in [2^-120, 2^120]: then no product of up to six of them, nor any rounded
+// difference of such products, leaves the normal range, and the relative error bounds hold.
+bool
+inFilterRange (const double* x, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    const double m = std::abs (x[i]);
+    if (m != 0.0 && !(m >= 0x1p-120 && m <= 0x1p120))
+      return false;
+  }
+  return true;
+}
+
+double
+dot (const double* x, const double* y)
+{
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+/** x times y; with \a absolute, the same formula over |x|, |y| with every minus a plus (the
+  * magnitude that bounds the rounding error). */
+void
+cross (const double* x, const double* y, double* out, bool absolute = false)
+{
+  const double s = absolute ? 1.0 : -1.0;
+  out[0] = x[1] * y[2] + s * x[2] * y[1];
+  out[1] = x[2] * y[0] + s * x[0] * y[2];
+  out[2] = x[0] * y[1] + s * x[1] * y[0];
+}
+
+/** The sign of a polynomial \a value computed in doubles when it is certain: \a magnitude is the
+  * same polynomial over absolute values with every minus a plus, and \a depth bounds the number
+  * of roundings along any path from a coordinate difference to the result. Every monomial then
+  * carries at most depth factors (1 + delta), |delta| <= 2^-53, so the error is below
+  * 2 depth 2^-53 magnitude (the factor 2 covers the rounding of magnitude itself). */
+int
+certainSign (double value, double magnitude, int depth)
+{
+  const double bound = 2.0 * depth * 0x1p-53 * magnitude;
+  return value > bound ? 1 : value < -bound ? -1 : 0;
+}
+
+/** With equal weights the smallest orthosphere of an edge ab is its diametral sphere, and q is
+  * strictly inside it iff (q - a).(q - b) < 0. Returns that sign (-1 inside, +1 outside) when
+  * double arithmetic certainly has it right, 0 when the exact predicate must decide. */
+int
+diametralSideFiltered (const BarePoint& a, const BarePoint& b, const BarePoint& q)
+{
+  double x[3], y[3];
+  for (int i = 0; i < 3; ++i)
+    x[i] = q[i] - a[i], y[i] = q[i] - b[i];
+  if (!inFilterRange (x, 3) || !inFilterRange (y, 3))
+    return 0;
+  double magnitude = 0.0;
+  for (int i = 0; i < 3; ++i)
+    magnitude += std::abs (x[i] * y[i]);
+  return certainSign (dot (x, y), magnitude, 4);
+}
+
+/** With equal weights the smallest orthosphere of a triangle abc is the sphere through its
+  * circumcircle, centred at o = a + (m x n) / (2 |n|^2) with u = b - a, v = c - a, n = u x v,
+  * m = |u|^2 v - |v|^2 u. With w = q - a, q is strictly inside iff |w - (o - a)|^2 < |o - a|^2,
+  * that is iff |w|^2 |n|^2 - w.(m x n) < 0 (times |n|^2 > 0). The sign as above. */
+int
+circumsphereSideFiltered (const BarePoint& a, const BarePoint& b, const BarePoint& c, const BarePoint& q)
+{
+  double u[3], v[3], w[3];
+  for (int i = 0; i < 3; ++i)
+    u[i] = b[i] - a[i], v[i] = c[i] - a[i], w[i] = q[i] - a[i];
+  if (!inFilterRange (u, 3) || !inFilterRange (v, 3) || !inFilterRange (w, 3))
+    return 0;
+  double n[3], m[3], mn[3];
+  cross (u, v, n);
+  const double uu = dot (u, u), vv = dot (v, v);
+  for (int i = 0; i < 3; ++i)
+    m[i] = uu * v[i] - vv * u[i];
+  cross (m, n, mn);
+  const double value = dot (w, w) * dot (n, n) - dot (w, mn);
+
+  double au[3], av[3], aw[3], an[3], am[3], amn[3];
+  for (int i = 0; i < 3; ++i)
+    au[i] = std::abs (u[i]), av[i] = std::abs (v[i]), aw[i] = std::abs (w[i]);
+  cross (au, av, an, true);
+  for (int i = 0; i < 3; ++i)
+    am[i] = uu * av[i] + vv * au[i];
+  cross (am, an, amn, true);
+  const double magnitude = dot (aw, aw) * dot (an, an) + dot (aw, amn);
+  // Depth: difference 1, |u|^2 3 more, m 2 more, m x n 2 more, dot with w 3 more, the final
+  // difference 1: 12.
+  return certainSign (value, magnitude, 12);
+}
+
 /** A weight strictly larger than w, computed exactly (any increase will do: the predicate is
   * affine in the weight, so only the sign of the change matters). */
 double
@@ -64,6 +158,15 @@ bool
 PowerPredicates::insideSmallestOrthosphere (const std::uint32_t* sphere, int n, std::uint32_t q) const
 {
   const auto& pts = points_->points;
+  if (uniform_weights_ && (n == 2 || n == 3))
+  {
+    const BarePoint& p = pts[q].point ();
+    const int sign = n == 2 ? diametralSideFiltered (pts[sphere[0]].point (), pts[sphere[1]].point (), p)
+                            : circumsphereSideFiltered (pts[sphere[0]].point (), pts[sphere[1]].point (),
+                                                        pts[sphere[2]].point (), p);
+    if (sign != 0)
+      return sign < 0;
+  }
   const WeightedPoint* s[4];
   for (int i = 0; i < n; ++i)
     s[i] = &pts[sphere[i]];
