@@ -151,6 +151,13 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     for (std::size_t t = 0; t < num_top; ++t)
       sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
     vertices_[2] = std::move (top);
+    triangle_edges_.resize (3 * size (2));
+    forEach (size (2), [&] (std::size_t t) {
+      const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
+      triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
+      triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
+      triangle_edges_[3 * t + 2] = edge_id (v[0], v[1]);
+    });
   }
   else
   {
@@ -169,18 +176,27 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     vertices_[2].resize (3 * std::size_t (first_triangle[num_top]));
     tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
     tet_edges_.resize (6 * num_top);
+    triangle_edges_.resize (vertices_[2].size ());
     forEach (num_top, [&] (std::size_t t) {
       const std::uint32_t* v = &top[4 * t];
+      const SimplexId* edge = &tet_edges_[6 * t];
+      for (int e = 0; e < 6; ++e)
+        tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);
       SimplexId next = first_triangle[t];
       for (int i = 0; i < 4; ++i)
       {
         if (!names (t, i))
           continue;
         const SimplexId f = next++;
-        std::uint32_t a = v[(i + 1) % 4], b = v[(i + 2) % 4], c = v[(i + 3) % 4];
-        sort3 (a, b, c);
-        std::uint32_t* out = &vertices_[2][3 * std::size_t (f)];
-        out[0] = a, out[1] = b, out[2] = c;
+        // The facet's local vertices in ascending vertex id; its edges are the tetrahedron's.
+        int l[3] = {(i + 1) % 4, (i + 2) % 4, (i + 3) % 4};
+        std::sort (l, l + 3, [&] (int x, int y) { return v[x] < v[y]; });
+        for (int j = 0; j < 3; ++j)
+        {
+          vertices_[2][3 * std::size_t (f) + j] = v[l[j]];
+          const unsigned opposite_j = (1u << l[(j + 1) % 3]) | (1u << l[(j + 2) % 3]);
+          triangle_edges_[3 * std::size_t (f) + j] = edge[EDGE_SLOT[opposite_j]];
+        }
         tet_triangles_[4 * t + i] = f;
         const std::uint32_t u = neighbours[4 * t + i];
         if (u == ~std::uint32_t (0))
@@ -192,22 +208,11 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
           throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
         tet_triangles_[4 * std::size_t (u) + j] = f;
       }
-      for (int e = 0; e < 6; ++e)
-        tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);
     });
     if (std::find (tet_triangles_.begin (), tet_triangles_.end (), NO_SIMPLEX) != tet_triangles_.end ())
       throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
     vertices_[3] = std::move (top);
   }
-
-  const std::size_t num_triangles = size (2);
-  triangle_edges_.resize (3 * num_triangles);
-  forEach (num_triangles, [&] (std::size_t t) {
-    const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
-    triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
-    triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
-    triangle_edges_[3 * t + 2] = edge_id (v[0], v[1]);
-  });
 }
 
 Simplex
