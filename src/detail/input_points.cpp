@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "input_points.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -30,25 +32,30 @@ selectInputPoints (const std::vector<Point3>& points, const std::vector<double>&
 
   // Equal positions become neighbours; among them the largest weight, then the smallest index,
   // comes first and is the one kept. -0.0 == 0.0 here, as it is for the geometry.
-  std::sort (finite.begin (), finite.end (), [&] (PointIndex a, PointIndex b) {
+  tbb::parallel_sort (finite.begin (), finite.end (), [&] (PointIndex a, PointIndex b) {
     if (points[a] != points[b])
       return points[a] < points[b];
     if (weight (a) != weight (b))
       return weight (a) > weight (b);
     return a < b;
   });
-  std::vector<PointIndex> kept;
-  kept.reserve (finite.size ());
+  std::vector<bool> is_kept (points.size (), false);
+  PointIndex last_kept = 0;
   for (std::size_t k = 0; k < finite.size (); ++k)
   {
-    if (k > 0 && points[finite[k]] == points[kept.back ()])
-      s.duplicates.emplace_back (finite[k], kept.back ());
+    if (k > 0 && points[finite[k]] == points[last_kept])
+      s.duplicates.emplace_back (finite[k], last_kept);
     else
-      kept.push_back (finite[k]);
+      is_kept[last_kept = finite[k]] = true;
   }
-  // Keep input order, so everything downstream is independent of the sort above.
-  std::sort (kept.begin (), kept.end ());
+  finite = {};
   std::sort (s.duplicates.begin (), s.duplicates.end ());
+
+  // Keep input order, so everything downstream is independent of the sort above.
+  std::vector<PointIndex> kept;
+  for (PointIndex i = 0; i < points.size (); ++i)
+    if (is_kept[i])
+      kept.push_back (i);
 
   s.positions.reserve (kept.size ());
   s.weights.reserve (kept.size ());

@@ -64,7 +64,8 @@ private:
 inline int
 maskSize (unsigned mask)
 {
-  return __builtin_popcount (mask);
+  // Masks have at most four bits; a nibble table, as the default target has no popcount.
+  return static_cast<int> ((0x4332322132212110ull >> (4 * (mask & 15u))) & 15u);
 }
 
 /** \brief The mask of all k+1 local vertices of a k-simplex. */
