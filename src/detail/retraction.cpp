@@ -2,6 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "retraction.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <random>
 
 namespace pcl_wrap::detail
@@ -26,11 +29,17 @@ Retraction::countCofaces ()
 {
   for (int k = 0; k < 3; ++k)
     counts_[k].assign (complex_.size (k), 0);
+  // In parallel: a facet is shared, so its count is bumped atomically (relaxed: only the
+  // totals matter, read after the loop).
   for (int m = 1; m <= complex_.dimension (); ++m)
-    for (SimplexId s = 0; s < complex_.size (m); ++s)
-      if (alive_[m][s])
-        for (int i = 0; i <= m; ++i)
-          ++counts_[m - 1][complex_.facet (m, s, i).id];
+    tbb::parallel_for (tbb::blocked_range<SimplexId> (0, static_cast<SimplexId> (complex_.size (m)), 4096),
+                       [&] (const tbb::blocked_range<SimplexId>& r) {
+                         for (SimplexId s = r.begin (); s != r.end (); ++s)
+                           if (alive_[m][s])
+                             for (int i = 0; i <= m; ++i)
+                               __atomic_fetch_add (&counts_[m - 1][complex_.facet (m, s, i).id], 1u,
+                                                   __ATOMIC_RELAXED);
+                       });
 }
 
 bool
