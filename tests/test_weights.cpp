@@ -135,6 +135,33 @@ TEST (Weights, InvariantsOnRandomWeightedSets)
   EXPECT_GT (confident_edges, 0u);
 }
 
+TEST (Weights, ParallelInsertionHidesTheSamePointsAsOneThread)
+{
+  // Over 20000 points, so that more than one thread inserts in parallel; heavy weights hide
+  // points, and a point hidden by one thread's insertion may have been another's hint.
+  const std::size_t n = 25000;
+  const auto points = cubeSample (n, 11);
+  const auto weights = randomWeights (n, 0.0, 2 * std::pow (2.0 / std::cbrt (double (n)), 2), 11);
+  WrapParameters one;
+  one.num_threads = 1;
+  const WrapResult reference = computeWrap (points, weights, one);
+  ASSERT_GT (reference.hidden.size (), 100u);
+  for (unsigned threads : {2u, 0u})
+  {
+    WrapParameters many;
+    many.num_threads = threads;
+    const WrapResult r = computeWrap (points, weights, many);
+    EXPECT_EQ (r.hidden, reference.hidden);
+    EXPECT_EQ (r.surface.triangles, reference.surface.triangles);
+    EXPECT_EQ (r.statistics.simplices, reference.statistics.simplices);
+    for (int k = 0; k <= 3; ++k)
+    {
+      EXPECT_EQ (r.complex[k].vertices, reference.complex[k].vertices);
+      EXPECT_EQ (r.complex[k].in_x, reference.complex[k].in_x);
+    }
+  }
+}
+
 TEST (Weights, MatchExactReferenceAndNaiveRetraction)
 {
   std::size_t hidden_checked = 0;

@@ -16,7 +16,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/scalable_allocator.h>
-#include <tbb/task_arena.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <array>
@@ -154,7 +154,8 @@ triangulateWithCgal (const std::vector<Point3>& positions, const std::vector<dou
     box += input.back ().first.bbox ();
   }
   const bool parallel =
-      positions.size () >= PARALLEL_INSERTION_MIN_POINTS && tbb::this_task_arena::max_concurrency () > 1;
+      positions.size () >= PARALLEL_INSERTION_MIN_POINTS &&
+      tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism) > 1;
   std::optional<LockGrid> locks;
   if (parallel)
     locks.emplace (box, LOCK_GRID_CELLS);
