@@ -2,10 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "classification.h"
 
+#include "parallel_for_each.h"
 #include "power_predicates.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <atomic>
 #include <stdexcept>
@@ -14,16 +13,6 @@ namespace pcl_wrap::detail
 {
 namespace
 {
-
-template <class F>
-void
-forEach (std::size_t n, const F& f)
-{
-  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 1024), [&] (const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin (); i != r.end (); ++i)
-      f (static_cast<SimplexId> (i));
-  });
-}
 
 /** The local vertices of (k, s) in \a mask, as vertex ids. */
 int
@@ -65,7 +54,8 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   // (that needs |p - q|^2 < 0): edges ask nothing, and their midpoint is their centre.
   const bool uniform = predicates.uniformWeights ();
   for (int m = uniform ? 2 : 1; m <= d; ++m)
-    forEach (complex.size (m), [&] (SimplexId s) {
+    parallelForEach (complex.size (m), [&] (std::size_t id) {
+      const auto s = static_cast<SimplexId> (id);
       unsigned inside = 0;
       for (int i = 0; i <= m; ++i)
       {
@@ -82,7 +72,8 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
     });
 
   for (int k = 1; k <= d; ++k)
-    forEach (complex.size (k), [&] (SimplexId s) {
+    parallelForEach (complex.size (k), [&] (std::size_t id) {
+      const auto s = static_cast<SimplexId> (id);
       const unsigned positive = fullMask (k) & ~unsigned (c.lowest_successor[k][s]);
       c.lowest_successor[k][s] = 0;
       if (k < d && attached[k][s].load (std::memory_order_relaxed))

@@ -3,6 +3,7 @@
 #include "regular_triangulation.h"
 
 #include "cgal_kernel.h"
+#include "parallel_for_each.h"
 
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_lock_grid_3.h>
@@ -13,8 +14,6 @@
 #include <CGAL/Hilbert_policy_tags.h>
 #include <CGAL/property_map.h>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/scalable_allocator.h>
 #include <tbb/global_control.h>
 
@@ -45,16 +44,6 @@ using Regular = CGAL::Regular_triangulation_3<Kernel, Tds, LockGrid>;
 constexpr std::size_t PARALLEL_INSERTION_MIN_POINTS = 20000;
 // Lock grid cells per axis (CGAL's examples use 50; more cells, fewer conflicts).
 constexpr int LOCK_GRID_CELLS = 50;
-
-template <class F>
-void
-forEach (std::size_t n, const F& f)
-{
-  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 4096), [&] (const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin (); i != r.end (); ++i)
-      f (i);
-  });
-}
 
 /** The even permutation of a tetrahedron's local vertices that puts its smallest vertex id
   * first and the next smallest second: one canonical, still positively oriented, order. */
@@ -94,7 +83,7 @@ extractTetrahedra (const Regular& rt, const Id& id, Triangulation& t)
 
   std::vector<std::uint32_t> canonical (4 * n);
   std::vector<std::array<std::uint8_t, 4>> local (n); // canonical slot -> CGAL's local index
-  forEach (n, [&] (std::size_t j) {
+  parallelForEach (n, [&] (std::size_t j) {
     std::uint32_t v[4];
     for (int i = 0; i < 4; ++i)
       v[i] = id (cells[j]->vertex (i));
@@ -122,15 +111,15 @@ extractTetrahedra (const Regular& rt, const Id& id, Triangulation& t)
     const std::uint32_t* v = &canonical[4 * std::size_t (j)];
     return std::array<std::uint32_t, 3>{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])};
   };
-  forEach (num_vertices, [&] (std::size_t a) {
+  parallelForEach (num_vertices, [&] (std::size_t a) {
     std::sort (order.begin () + begin[a], order.begin () + begin[a + 1],
                [&] (std::uint32_t x, std::uint32_t y) { return key (x) < key (y); });
   });
 
-  forEach (n, [&] (std::size_t r) { cells[order[r]]->info () = static_cast<std::uint32_t> (r); });
+  parallelForEach (n, [&] (std::size_t r) { cells[order[r]]->info () = static_cast<std::uint32_t> (r); });
   t.top_simplices.resize (4 * n);
   t.neighbours.resize (4 * n);
-  forEach (n, [&] (std::size_t r) {
+  parallelForEach (n, [&] (std::size_t r) {
     const std::uint32_t j = order[r];
     for (int i = 0; i < 4; ++i)
     {

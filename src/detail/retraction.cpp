@@ -2,8 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "retraction.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "parallel_for_each.h"
 
 #include <random>
 
@@ -32,14 +31,12 @@ Retraction::countCofaces ()
   // In parallel: a facet is shared, so its count is bumped atomically (relaxed: only the
   // totals matter, read after the loop).
   for (int m = 1; m <= complex_.dimension (); ++m)
-    tbb::parallel_for (tbb::blocked_range<SimplexId> (0, static_cast<SimplexId> (complex_.size (m)), 4096),
-                       [&] (const tbb::blocked_range<SimplexId>& r) {
-                         for (SimplexId s = r.begin (); s != r.end (); ++s)
-                           if (alive_[m][s])
-                             for (int i = 0; i <= m; ++i)
-                               __atomic_fetch_add (&counts_[m - 1][complex_.facet (m, s, i).id], 1u,
-                                                   __ATOMIC_RELAXED);
-                       });
+    parallelForEach (complex_.size (m), [&] (std::size_t id) {
+      const auto s = static_cast<SimplexId> (id);
+      if (alive_[m][s])
+        for (int i = 0; i <= m; ++i)
+          __atomic_fetch_add (&counts_[m - 1][complex_.facet (m, s, i).id], 1u, __ATOMIC_RELAXED);
+    });
 }
 
 bool

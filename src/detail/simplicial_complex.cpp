@@ -2,8 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "simplicial_complex.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "parallel_for_each.h"
+
 
 #include <algorithm>
 #include <atomic>
@@ -17,16 +17,6 @@ namespace
 // Local vertex pairs of a tetrahedron's six edges, and the slot of each two-bit mask.
 constexpr int TET_EDGE[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr int EDGE_SLOT[16] = {-1, -1, -1, 0, -1, 1, 3, -1, -1, 2, 4, -1, 5, -1, -1, -1};
-
-template <class F>
-void
-forEach (std::size_t n, const F& f)
-{
-  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, n, 4096), [&] (const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin (); i != r.end (); ++i)
-      f (i);
-  });
-}
 
 /** Faces of one dimension, bucketed by their lowest vertex: a face is found by a binary search
   * among the few faces of its lowest vertex, and its id is its position in the table. Built in
@@ -42,7 +32,7 @@ public:
     : begin_ (num_vertices + 1, 0)
   {
     std::vector<std::atomic<std::size_t>> fill (num_vertices + 1);
-    forEach (num_top, [&] (std::size_t i) {
+    parallelForEach (num_top, [&] (std::size_t i) {
       each (i, [&] (std::uint32_t a, Key) { fill[a + 1].fetch_add (1, std::memory_order_relaxed); });
     });
     for (std::uint32_t a = 0; a < num_vertices; ++a)
@@ -50,13 +40,13 @@ public:
     keys_.resize (begin_[num_vertices]);
     for (std::uint32_t a = 0; a < num_vertices; ++a)
       fill[a].store (begin_[a], std::memory_order_relaxed);
-    forEach (num_top, [&] (std::size_t i) {
+    parallelForEach (num_top, [&] (std::size_t i) {
       each (i, [&] (std::uint32_t a, Key k) { keys_[fill[a].fetch_add (1, std::memory_order_relaxed)] = k; });
     });
 
     // Sort and deduplicate each bucket in place, then close the gaps.
     std::vector<std::size_t> unique (num_vertices + 1, 0);
-    forEach (num_vertices, [&] (std::size_t a) {
+    parallelForEach (num_vertices, [&] (std::size_t a) {
       auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
       std::sort (first, last);
       unique[a + 1] = static_cast<std::size_t> (std::unique (first, last) - first);
@@ -64,7 +54,7 @@ public:
     for (std::uint32_t a = 0; a < num_vertices; ++a)
       unique[a + 1] += unique[a];
     std::vector<Key> packed (unique[num_vertices]);
-    forEach (num_vertices, [&] (std::size_t a) {
+    parallelForEach (num_vertices, [&] (std::size_t a) {
       std::copy_n (keys_.begin () + begin_[a], unique[a + 1] - unique[a], packed.begin () + unique[a]);
     });
     keys_ = std::move (packed);
@@ -135,7 +125,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       }
   });
   vertices_[1].resize (2 * edges.size ());
-  forEach (num_vertices, [&] (std::size_t a) {
+  parallelForEach (num_vertices, [&] (std::size_t a) {
     for (std::size_t f = edges.begin (a); f < edges.end (a); ++f)
     {
       vertices_[1][2 * f] = static_cast<std::uint32_t> (a);
@@ -152,7 +142,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
     vertices_[2] = std::move (top);
     triangle_edges_.resize (3 * size (2));
-    forEach (size (2), [&] (std::size_t t) {
+    parallelForEach (size (2), [&] (std::size_t t) {
       const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
       triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
       triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
@@ -177,7 +167,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
     tet_edges_.resize (6 * num_top);
     triangle_edges_.resize (vertices_[2].size ());
-    forEach (num_top, [&] (std::size_t t) {
+    parallelForEach (num_top, [&] (std::size_t t) {
       const std::uint32_t* v = &top[4 * t];
       const SimplexId* edge = &tet_edges_[6 * t];
       for (int e = 0; e < 6; ++e)
