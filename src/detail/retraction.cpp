@@ -4,6 +4,11 @@
 
 #include "parallel_for_each.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+
 #include <random>
 
 namespace pcl_wrap::detail
@@ -52,10 +57,11 @@ Retraction::collapsible (Simplex v) const
   return cofacesInY (v) == static_cast<std::uint32_t> (tau.dim - v.dim);
 }
 
+template <bool CONCURRENT>
 void
-Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below)
+Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below, std::vector<Simplex>& work)
 {
-  alive_[xi.dim][xi.id] = 0;
+  __atomic_store_n (&alive_[xi.dim][xi.id], std::uint8_t (0), __ATOMIC_RELAXED);
   if (stamp_ != 0)
     stamps_[xi.dim][xi.id] = stamp_;
   if (in_trial_)
@@ -67,9 +73,12 @@ Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kep
   {
     const unsigned facet = removed_mask & ~(drop & -drop);
     const Simplex f = complex_.face (tau.dim, tau.id, facet);
-    --counts_[f.dim][f.id];
+    if (CONCURRENT)
+      __atomic_fetch_sub (&counts_[f.dim][f.id], 1u, __ATOMIC_RELAXED);
+    else
+      --counts_[f.dim][f.id];
     if ((facet & kept_below) != kept_below)
-      work_.push_back (f); // stays, and may have become free
+      work.push_back (f); // stays, and may have become free
   }
 }
 
@@ -79,7 +88,50 @@ Retraction::collapse (Simplex v, Simplex tau)
   // Remove every xi with v <= xi <= tau.
   const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
   for (unsigned removed = low; removed <= fullMask (tau.dim); removed = (removed + 1) | low)
-    remove (complex_.face (tau.dim, tau.id, removed), removed, tau, low);
+    remove<false> (complex_.face (tau.dim, tau.id, removed), removed, tau, low, work_);
+}
+
+std::size_t
+Retraction::retractInParallel ()
+{
+  // Why threads may collapse at once: the intervals [v, tau] of the flow are disjoint, so a
+  // collapse removes only its own interval; the faces of tau above v are in that interval, so
+  // no other thread removes them, and v's coface count reaches tau.dim - v.dim exactly when
+  // every other coface is gone, for good (counts only fall). A thread that sees that may
+  // collapse; the exchange on tau's flag lets one thread only do so. The thread whose removal
+  // makes the last decrement sees the final count (atomic read-modify-write), so no pair that
+  // becomes free is missed; and the result does not depend on the order (ALGORITHM.md §5).
+  std::atomic<std::size_t> collapses{0};
+  for (int k = 0; k < complex_.dimension (); ++k)
+    tbb::parallel_for (tbb::blocked_range<SimplexId> (0, static_cast<SimplexId> (complex_.size (k)), 4096),
+                       [&] (const tbb::blocked_range<SimplexId>& range) {
+                         std::vector<Simplex> work;
+                         std::size_t done = 0;
+                         for (SimplexId s = range.begin (); s != range.end (); ++s)
+                         {
+                           if (classification_.predecessor[k][s].id == NO_SIMPLEX)
+                             continue;
+                           work.push_back ({k, s});
+                           while (!work.empty ())
+                           {
+                             const Simplex v = work.back ();
+                             work.pop_back ();
+                             if (!collapsible (v))
+                               continue;
+                             const Simplex tau = classification_.predecessor[v.dim][v.id];
+                             std::uint8_t alive = 1;
+                             if (!__atomic_compare_exchange_n (&alive_[tau.dim][tau.id], &alive, std::uint8_t (0), false,
+                                                               __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+                               continue; // another thread collapses this pair
+                             const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
+                             for (unsigned removed = low; removed <= fullMask (tau.dim); removed = (removed + 1) | low)
+                               remove<true> (complex_.face (tau.dim, tau.id, removed), removed, tau, low, work);
+                             ++done;
+                           }
+                         }
+                         collapses += done;
+                       });
+  return collapses;
 }
 
 bool
@@ -88,7 +140,7 @@ Retraction::deletePrincipal (Simplex s)
   // Any coface of s contains a coface one dimension up: none of those, no coface at all.
   if (!inY (s) || cofacesInY (s) != 0)
     return false;
-  remove (s, fullMask (s.dim), s, fullMask (s.dim));
+  remove<false> (s, fullMask (s.dim), s, fullMask (s.dim), work_);
   return true;
 }
 
@@ -123,6 +175,11 @@ Retraction::retract (std::uint64_t order_seed)
 {
   // The first retraction starts from every equivocal simplex that is some lowest successor;
   // later ones (after deletions) from the work the deletions queued.
+  if (!seeded_ && order_seed == 0 && !in_trial_ && stamp_ == 0)
+  {
+    seeded_ = true;
+    return retractInParallel ();
+  }
   if (!seeded_)
     for (int k = 0; k < complex_.dimension (); ++k)
       for (SimplexId s = 0; s < complex_.size (k); ++s)

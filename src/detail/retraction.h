@@ -55,17 +55,25 @@ public:
     * stamped. */
   std::uint32_t removalStamp (Simplex s) const { return stamps_[s.dim].empty () ? 0 : stamps_[s.dim][s.id]; }
 
-  bool inY (Simplex s) const { return alive_[s.dim][s.id] != 0; }
+  // Relaxed atomic loads (plain loads on x86): the first retraction runs on several threads.
+  bool inY (Simplex s) const { return __atomic_load_n (&alive_[s.dim][s.id], __ATOMIC_RELAXED) != 0; }
   /** \brief Number of cofaces of \a s of dimension s.dim + 1 still in Y. */
-  std::uint32_t cofacesInY (Simplex s) const { return s.dim < 3 ? counts_[s.dim][s.id] : 0; }
+  std::uint32_t cofacesInY (Simplex s) const
+  {
+    return s.dim < 3 ? __atomic_load_n (&counts_[s.dim][s.id], __ATOMIC_RELAXED) : 0;
+  }
 
 private:
   bool collapsible (Simplex v) const;
   void collapse (Simplex v, Simplex tau);
+  /** The first retraction of a fresh Y (no trial, no stamps, fixed order), on all threads. */
+  std::size_t retractInParallel ();
   /** Counts every simplex of Y in its facets' coface counts. */
   void countCofaces ();
-  /** Takes \a xi out of Y, tells its facets, and queues the facets that stay. */
-  void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below);
+  /** Takes \a xi out of Y, tells its facets, and queues on \a work the facets that stay.
+    * CONCURRENT: other threads remove other simplices at the same time. */
+  template <bool CONCURRENT>
+  void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below, std::vector<Simplex>& work);
 
   const SimplicialComplex& complex_;
   const Classification& classification_;
