@@ -5,7 +5,6 @@
 #include "parallel_for_each.h"
 #include "power_predicates.h"
 
-
 #include <atomic>
 #include <stdexcept>
 

@@ -73,7 +73,7 @@ canonicalOrder (const std::uint32_t* v)
   * neighbourhood together. */
 template <class Id>
 void
-extractTetrahedra (const Regular& rt, const Id& id, Triangulation& t)
+extractTetrahedra (Regular& rt, const Id& id, Triangulation& t)
 {
   std::vector<Regular::Cell_handle> cells;
   cells.reserve (rt.tds ().number_of_cells ());

@@ -82,13 +82,13 @@ Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kep
   }
 }
 
+template <bool CONCURRENT>
 void
-Retraction::collapse (Simplex v, Simplex tau)
+Retraction::collapse (Simplex tau, std::vector<Simplex>& work)
 {
-  // Remove every xi with v <= xi <= tau.
   const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
   for (unsigned removed = low; removed <= fullMask (tau.dim); removed = (removed + 1) | low)
-    remove<false> (complex_.face (tau.dim, tau.id, removed), removed, tau, low, work_);
+    remove<CONCURRENT> (complex_.face (tau.dim, tau.id, removed), removed, tau, low, work);
 }
 
 std::size_t
@@ -123,9 +123,7 @@ Retraction::retractInParallel ()
                              if (!__atomic_compare_exchange_n (&alive_[tau.dim][tau.id], &alive, std::uint8_t (0), false,
                                                                __ATOMIC_RELAXED, __ATOMIC_RELAXED))
                                continue; // another thread collapses this pair
-                             const unsigned low = classification_.lowest_successor[tau.dim][tau.id];
-                             for (unsigned removed = low; removed <= fullMask (tau.dim); removed = (removed + 1) | low)
-                               remove<true> (complex_.face (tau.dim, tau.id, removed), removed, tau, low, work);
+                             collapse<true> (tau, work);
                              ++done;
                            }
                          }
@@ -197,7 +195,7 @@ Retraction::retract (std::uint64_t order_seed)
     work_.pop_back ();
     if (collapsible (v))
     {
-      collapse (v, classification_.predecessor[v.dim][v.id]);
+      collapse<false> (classification_.predecessor[v.dim][v.id], work_);
       ++collapses;
     }
   }

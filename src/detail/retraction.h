@@ -65,7 +65,10 @@ public:
 
 private:
   bool collapsible (Simplex v) const;
-  void collapse (Simplex v, Simplex tau);
+  /** Removes every xi with v <= xi <= tau (v is tau's lowest successor), queueing on \a work
+    * the facets that stay. CONCURRENT as for remove(). */
+  template <bool CONCURRENT>
+  void collapse (Simplex tau, std::vector<Simplex>& work);
   /** The first retraction of a fresh Y (no trial, no stamps, fixed order), on all threads. */
   std::size_t retractInParallel ();
   /** Counts every simplex of Y in its facets' coface counts. */

@@ -4,7 +4,6 @@
 
 #include "parallel_for_each.h"
 
-
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
