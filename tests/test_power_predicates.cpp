@@ -4,7 +4,7 @@
 // The one geometric predicate (ALGORITHM.md §2) against the exact rational power of the smallest
 // orthosphere, on queries placed within a few ulps of the sphere and at scales on both sides of
 // the range the double-precision filters accept: a filter may pass a question on to the exact
-// computation, never answer it wrongly.
+// computation, never answer it wrongly. Asked one at a time and a whole simplex at once.
 #include "support/exact_reference.h"
 
 #include "detail/power_predicates.h"
@@ -65,6 +65,17 @@ compareNearSphere (int n, double scale, double offset, double weight, std::mt199
     ASSERT_EQ (predicates.insideSmallestOrthosphere (ids.data (), n, static_cast<std::uint32_t> (n)),
                CGAL::is_negative (power_of_q))
         << n << " points, scale " << scale << ", offset " << offset << ", weight " << weight << ", k " << k;
+    // The same question asked with all of the simplex (sphere points + q)'s others at once.
+    std::vector<std::uint32_t> simplex = ids;
+    simplex.push_back (static_cast<std::uint32_t> (n));
+    const unsigned inside = predicates.insideOppositeFacets (simplex.data (), n);
+    ASSERT_EQ (bool (inside & (1u << n)), CGAL::is_negative (power_of_q)) << "batched, " << n << " points, scale " << scale;
+    for (int i = 0; i < n; ++i)
+    {
+      std::vector<std::uint32_t> facet = simplex;
+      facet.erase (facet.begin () + i);
+      ASSERT_EQ (bool (inside & (1u << i)), predicates.insideSmallestOrthosphere (facet.data (), n, simplex[i]));
+    }
     ++tally.compared;
   }
 }

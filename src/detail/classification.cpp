@@ -10,21 +10,6 @@
 
 namespace pcl_wrap::detail
 {
-namespace
-{
-
-/** The local vertices of (k, s) in \a mask, as vertex ids. */
-int
-gather (const SimplicialComplex& complex, int k, SimplexId s, unsigned mask, std::uint32_t* out)
-{
-  int n = 0;
-  for (int i = 0; i <= k; ++i)
-    if (mask & (1u << i))
-      out[n++] = complex.vertex (k, s, i);
-  return n;
-}
-
-} // namespace
 
 Classification
 classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
@@ -55,18 +40,9 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   for (int m = uniform ? 2 : 1; m <= d; ++m)
     parallelForEach (complex.size (m), [&] (std::size_t id) {
       const auto s = static_cast<SimplexId> (id);
-      unsigned inside = 0;
-      for (int i = 0; i <= m; ++i)
-      {
-        const unsigned mask = fullMask (m) & ~(1u << i);
-        std::uint32_t sphere[3];
-        const int n = gather (complex, m, s, mask, sphere);
-        if (predicates.insideSmallestOrthosphere (sphere, n, complex.vertex (m, s, i)))
-        {
-          inside |= 1u << i;
-          attached[m - 1][complex.face (m, s, mask).id].store (1, std::memory_order_relaxed);
-        }
-      }
+      const unsigned inside = predicates.insideOppositeFacets (complex.vertices (m, s), m);
+      for (unsigned rest = inside; rest != 0; rest &= rest - 1)
+        attached[m - 1][complex.facet (m, s, __builtin_ctz (rest)).id].store (1, std::memory_order_relaxed);
       c.lowest_successor[m][s] = static_cast<std::uint8_t> (inside);
     });
 
@@ -89,17 +65,29 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
     if (attached[0][v].load (std::memory_order_relaxed))
       c.classes[0][v] = SimplexClass::equivocal;
 
+  // Each confident simplex names itself the predecessor of its lowest successor. Claim 8 says no
+  // two name the same; should that break, the first in (dimension, id) order keeps it, as in a
+  // sequential pass, whatever the threads, and the others are counted.
+  std::atomic<std::size_t> extra{0};
   for (int k = 1; k <= d; ++k)
-    for (SimplexId s = 0; s < complex.size (k); ++s)
-      if (c.classes[k][s] == SimplexClass::confident)
-      {
-        const Simplex v = complex.face (k, s, c.lowest_successor[k][s]);
-        Simplex& pred = c.predecessor[v.dim][v.id];
-        if (pred.id != NO_SIMPLEX)
-          ++c.extra_predecessors;
-        else
-          pred = Simplex{k, s};
-      }
+    parallelForEach (complex.size (k), [&] (std::size_t id) {
+      const auto s = static_cast<SimplexId> (id);
+      if (c.classes[k][s] != SimplexClass::confident)
+        return;
+      const Simplex v = complex.face (k, s, c.lowest_successor[k][s]);
+      Simplex* pred = &c.predecessor[v.dim][v.id];
+      Simplex mine{k, s}, seen;
+      __atomic_load (pred, &seen, __ATOMIC_RELAXED);
+      while (seen.id == NO_SIMPLEX || k < seen.dim || (k == seen.dim && s < seen.id))
+        if (__atomic_compare_exchange (pred, &seen, &mine, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+        {
+          if (seen.id != NO_SIMPLEX)
+            extra.fetch_add (1, std::memory_order_relaxed); // displaced a later one
+          return;
+        }
+      extra.fetch_add (1, std::memory_order_relaxed); // an earlier one keeps it
+    });
+  c.extra_predecessors = extra.load ();
   return c;
 }
 

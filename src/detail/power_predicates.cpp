@@ -199,4 +199,29 @@ PowerPredicates::insideSmallestOrthosphere (const std::uint32_t* sphere, int n, 
   throw std::logic_error ("insideSmallestOrthosphere: perturbation did not decide");
 }
 
+unsigned
+PowerPredicates::insideOppositeFacets (const std::uint32_t* v, int k) const
+{
+  const auto& pts = points_->points;
+  unsigned inside = 0;
+  for (int i = 0; i <= k; ++i)
+  {
+    std::uint32_t facet[3];
+    int n = 0;
+    for (int j = 0; j <= k; ++j)
+      if (j != i)
+        facet[n++] = v[j];
+    // The filters inline here; what they cannot decide goes the exact way.
+    int sign = 0;
+    if (uniform_weights_ && k == 2)
+      sign = diametralSideFiltered (pts[facet[0]].point (), pts[facet[1]].point (), pts[v[i]].point ());
+    else if (uniform_weights_ && k == 3)
+      sign = circumsphereSideFiltered (pts[facet[0]].point (), pts[facet[1]].point (), pts[facet[2]].point (),
+                                       pts[v[i]].point ());
+    if (sign != 0 ? sign < 0 : insideSmallestOrthosphere (facet, n, v[i]))
+      inside |= 1u << i;
+  }
+  return inside;
+}
+
 } // namespace pcl_wrap::detail

@@ -39,6 +39,12 @@ public:
     * \a sphere? Never undecided. Thread-safe. */
   bool insideSmallestOrthosphere (const std::uint32_t* sphere, int n, std::uint32_t q) const;
 
+  /** \brief The mask of the local vertices i of the simplex \a vertices (\a k + 1 of them, k = 1
+    * to 3) that are inside the smallest orthosphere of the facet opposite them: the negative
+    * barycentric coordinates. The same answers as insideSmallestOrthosphere, asked together so
+    * that the common case is decided in one go. Thread-safe. */
+  unsigned insideOppositeFacets (const std::uint32_t* vertices, int k) const;
+
   /** \brief Do all points have the same weight? Then no point is inside the smallest
     * orthosphere of another single point (that would need |p - q|^2 < 0): no vertex is attached
     * and no edge has a negative barycentric coordinate, and those tests need not be asked. */

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <stdexcept>
 
 namespace pcl_wrap::detail
@@ -13,71 +14,88 @@ namespace pcl_wrap::detail
 namespace
 {
 
-// Local vertex pairs of a tetrahedron's six edges, and the slot of each two-bit mask.
-constexpr int TET_EDGE[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+// A tetrahedron's six edges are kept in the order of their local vertex pairs (0,1), (0,2), (0,3),
+// (1,2), (1,3), (2,3); the slot of each two-bit mask.
 constexpr int EDGE_SLOT[16] = {-1, -1, -1, 0, -1, 1, 3, -1, -1, 2, 4, -1, 5, -1, -1, -1};
 
-/** Faces of one dimension, bucketed by their lowest vertex: a face is found by a binary search
-  * among the few faces of its lowest vertex, and its id is its position in the table. Built in
-  * parallel; the table depends only on the set of faces, not on the threads. */
-template <class Key>
-class FaceTable
+/** Names the edges of the top simplices of a complex of dimension 2 or 3 (vertices \a top, d + 1
+  * per simplex): fills \a edge_vertices (two per edge, ascending, edges in lexicographic order)
+  * and \a top_edges (per top simplex, the id of its edge between local vertices (i, j), i < j,
+  * in the order (0,1), (0,2), ...). Every edge instance is bucketed by its lower vertex with its
+  * slot in \a top_edges; sorting a bucket brings an edge's instances together, and each takes the
+  * edge's id directly. In parallel; the ids depend only on the set of edges. */
+void
+nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& top,
+           std::vector<std::uint32_t>& edge_vertices, std::vector<SimplexId>& top_edges)
 {
-public:
-  /** \a each(i, emit) calls emit(lowest vertex, key of the other vertices) for the face
-    * instances of top simplex \a i. */
-  template <class Enumerate>
-  FaceTable (std::uint32_t num_vertices, std::size_t num_top, const Enumerate& each)
-    : begin_ (num_vertices + 1, 0)
+  const std::size_t num_top = top.size () / (d + 1), per_top = d == 3 ? 6 : 3;
+  if (per_top * num_top > std::numeric_limits<std::uint32_t>::max ())
+    throw std::length_error ("SimplicialComplex: too many simplices");
+  struct Instance
   {
-    std::vector<std::atomic<std::size_t>> fill (num_vertices + 1);
-    parallelForEach (num_top, [&] (std::size_t i) {
-      each (i, [&] (std::uint32_t a, Key) { fill[a + 1].fetch_add (1, std::memory_order_relaxed); });
-    });
-    for (std::uint32_t a = 0; a < num_vertices; ++a)
-      begin_[a + 1] = begin_[a] + fill[a + 1].load (std::memory_order_relaxed);
-    keys_.resize (begin_[num_vertices]);
-    for (std::uint32_t a = 0; a < num_vertices; ++a)
-      fill[a].store (begin_[a], std::memory_order_relaxed);
-    parallelForEach (num_top, [&] (std::size_t i) {
-      each (i, [&] (std::uint32_t a, Key k) { keys_[fill[a].fetch_add (1, std::memory_order_relaxed)] = k; });
-    });
+    std::uint32_t other; // the higher vertex
+    std::uint32_t slot;  // in top_edges
+    bool operator< (const Instance& o) const { return other < o.other; }
+  };
+  const auto each = [&] (std::size_t t, auto emit) {
+    std::uint32_t slot = static_cast<std::uint32_t> (per_top * t);
+    for (int i = 0; i <= d; ++i)
+      for (int j = i + 1; j <= d; ++j)
+      {
+        const std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
+        emit (std::min (a, b), Instance{std::max (a, b), slot++});
+      }
+  };
 
-    // Sort and deduplicate each bucket in place, then close the gaps.
-    std::vector<std::size_t> unique (num_vertices + 1, 0);
-    parallelForEach (num_vertices, [&] (std::size_t a) {
-      auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
-      std::sort (first, last);
-      unique[a + 1] = static_cast<std::size_t> (std::unique (first, last) - first);
+  std::vector<std::size_t> begin (num_vertices + 1, 0);
+  {
+    std::vector<std::atomic<std::size_t>> count (num_vertices + 1);
+    parallelForEach (num_top, [&] (std::size_t t) {
+      each (t, [&] (std::uint32_t a, Instance) { count[a + 1].fetch_add (1, std::memory_order_relaxed); });
     });
     for (std::uint32_t a = 0; a < num_vertices; ++a)
-      unique[a + 1] += unique[a];
-    std::vector<Key> packed (unique[num_vertices]);
-    parallelForEach (num_vertices, [&] (std::size_t a) {
-      std::copy_n (keys_.begin () + begin_[a], unique[a + 1] - unique[a], packed.begin () + unique[a]);
+      begin[a + 1] = begin[a] + count[a + 1].load (std::memory_order_relaxed);
+  }
+  std::vector<Instance> instances (begin[num_vertices]);
+  {
+    std::vector<std::atomic<std::size_t>> next (num_vertices);
+    for (std::uint32_t a = 0; a < num_vertices; ++a)
+      next[a].store (begin[a], std::memory_order_relaxed);
+    parallelForEach (num_top, [&] (std::size_t t) {
+      each (t, [&] (std::uint32_t a, Instance x) { instances[next[a].fetch_add (1, std::memory_order_relaxed)] = x; });
     });
-    keys_ = std::move (packed);
-    begin_ = std::move (unique);
   }
 
-  std::size_t size () const { return keys_.size (); }
-  std::size_t begin (std::uint32_t a) const { return begin_[a]; }
-  std::size_t end (std::uint32_t a) const { return begin_[a + 1]; }
-  Key key (std::size_t f) const { return keys_[f]; }
+  // Sort each bucket and count its distinct edges; a prefix sum gives each bucket its first id.
+  std::vector<SimplexId> first_id (num_vertices + 1, 0);
+  parallelForEach (num_vertices, [&] (std::size_t a) {
+    const auto first = instances.begin () + begin[a], last = instances.begin () + begin[a + 1];
+    std::sort (first, last);
+    SimplexId distinct = 0;
+    for (auto it = first; it != last; ++it)
+      distinct += it == first || it->other != (it - 1)->other;
+    first_id[a + 1] = distinct;
+  });
+  for (std::uint32_t a = 0; a < num_vertices; ++a)
+    first_id[a + 1] += first_id[a];
 
-  SimplexId find (std::uint32_t a, Key k) const
-  {
-    auto first = keys_.begin () + begin_[a], last = keys_.begin () + begin_[a + 1];
-    auto it = std::lower_bound (first, last, k);
-    if (it == last || *it != k)
-      throw std::logic_error ("SimplicialComplex: face of a simplex not found");
-    return static_cast<SimplexId> (it - keys_.begin ());
-  }
-
-private:
-  std::vector<std::size_t> begin_;
-  std::vector<Key> keys_;
-};
+  edge_vertices.resize (2 * std::size_t (first_id[num_vertices]));
+  top_edges.resize (per_top * num_top);
+  parallelForEach (num_vertices, [&] (std::size_t a) {
+    SimplexId id = first_id[a] - 1;
+    for (std::size_t k = begin[a]; k < begin[a + 1]; ++k)
+    {
+      const Instance& x = instances[k];
+      if (k == begin[a] || x.other != instances[k - 1].other)
+      {
+        ++id;
+        edge_vertices[2 * std::size_t (id)] = static_cast<std::uint32_t> (a);
+        edge_vertices[2 * std::size_t (id) + 1] = x.other;
+      }
+      top_edges[x.slot] = id;
+    }
+  });
+}
 
 void
 sort3 (std::uint32_t& a, std::uint32_t& b, std::uint32_t& c)
@@ -115,37 +133,17 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
 
   // dimension 2 or 3: the edges (and, in 3, the triangles) are the faces of the top simplices.
   const int d = dimension;
-  const FaceTable<std::uint32_t> edges (num_vertices, num_top, [&] (std::size_t t, auto emit) {
-    for (int i = 0; i <= d; ++i)
-      for (int j = i + 1; j <= d; ++j)
-      {
-        std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
-        emit (std::min (a, b), std::max (a, b));
-      }
-  });
-  vertices_[1].resize (2 * edges.size ());
-  parallelForEach (num_vertices, [&] (std::size_t a) {
-    for (std::size_t f = edges.begin (a); f < edges.end (a); ++f)
-    {
-      vertices_[1][2 * f] = static_cast<std::uint32_t> (a);
-      vertices_[1][2 * f + 1] = edges.key (f);
-    }
-  });
-  const auto edge_id = [&] (std::uint32_t a, std::uint32_t b) {
-    return edges.find (std::min (a, b), std::max (a, b));
-  };
-
   if (d == 2)
   {
     for (std::size_t t = 0; t < num_top; ++t)
       sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
+    std::vector<SimplexId> pair_edges; // edges (0,1), (0,2), (1,2): opposite local vertex 2, 1, 0
+    nameEdges (d, num_vertices, top, vertices_[1], pair_edges);
     vertices_[2] = std::move (top);
     triangle_edges_.resize (3 * size (2));
     parallelForEach (size (2), [&] (std::size_t t) {
-      const std::uint32_t* v = vertices (2, static_cast<SimplexId> (t));
-      triangle_edges_[3 * t + 0] = edge_id (v[1], v[2]);
-      triangle_edges_[3 * t + 1] = edge_id (v[0], v[2]);
-      triangle_edges_[3 * t + 2] = edge_id (v[0], v[1]);
+      for (int i = 0; i < 3; ++i)
+        triangle_edges_[3 * t + i] = pair_edges[3 * t + 2 - i];
     });
   }
   else
@@ -164,13 +162,11 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       first_triangle[t + 1] = first_triangle[t] + names (t, 0) + names (t, 1) + names (t, 2) + names (t, 3);
     vertices_[2].resize (3 * std::size_t (first_triangle[num_top]));
     tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
-    tet_edges_.resize (6 * num_top);
+    nameEdges (d, num_vertices, top, vertices_[1], tet_edges_);
     triangle_edges_.resize (vertices_[2].size ());
     parallelForEach (num_top, [&] (std::size_t t) {
       const std::uint32_t* v = &top[4 * t];
       const SimplexId* edge = &tet_edges_[6 * t];
-      for (int e = 0; e < 6; ++e)
-        tet_edges_[6 * t + e] = edge_id (v[TET_EDGE[e][0]], v[TET_EDGE[e][1]]);
       SimplexId next = first_triangle[t];
       for (int i = 0; i < 4; ++i)
       {
