@@ -4,17 +4,14 @@
 
 #include "cgal_kernel.h"
 #include "parallel_for_each.h"
+#include "z_order.h"
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_lock_grid_3.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
-#include <CGAL/Hilbert_sort_3.h>
-#include <CGAL/Hilbert_policy_tags.h>
-#include <CGAL/property_map.h>
 
 #include <tbb/scalable_allocator.h>
 #include <tbb/global_control.h>
@@ -83,7 +80,7 @@ canonicalOrder (const std::uint32_t* v)
   * depend only on the vertex ids \a id gives: sorted by their vertex sets, each listed by
   * canonicalOrder. A parallel insertion leaves CGAL's cells in an order that depends on thread
   * timing; this keeps every later stage, and so every result, the same on any number of
-  * threads. Ordering by lowest vertex along the Hilbert curve also keeps the tetrahedra of a
+  * threads. Ordering by lowest vertex along the curve of vertex ids also keeps the tetrahedra of a
   * neighbourhood together. */
 template <class Cgal, class Id>
 void
@@ -189,19 +186,10 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
   Triangulation t;
   t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
 
-  // Vertex ids along a Hilbert curve: neighbours in space are neighbours in every array
+  // Vertex ids along a space-filling curve: neighbours in space are neighbours in every array
   // indexed by vertex (and so by edge and triangle), which keeps the later stages in cache.
   // The numbering depends only on the points, never on CGAL's internals.
-  std::vector<BarePoint> bare;
-  bare.reserve (positions.size ());
-  for (const Point3& p : positions)
-    bare.emplace_back (p[0], p[1], p[2]);
-  std::vector<std::uint32_t> curve (positions.size ());
-  std::iota (curve.begin (), curve.end (), 0u);
-  using ByIndex = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<BarePoint>::type>;
-  CGAL::Hilbert_sort_3<ByIndex, CGAL::Hilbert_sort_median_policy, CGAL::Parallel_tag> (
-      ByIndex (CGAL::make_property_map (bare.data ()))) (curve.begin (), curve.end ());
-  bare = {};
+  const std::vector<std::uint32_t> curve = zOrder (positions);
 
   constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
   std::vector<std::uint32_t> vertex_of_point (positions.size (), ABSENT);

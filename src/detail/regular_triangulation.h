@@ -13,7 +13,7 @@ namespace pcl_wrap::detail
 /** \brief The regular triangulation of a set of weighted points, as plain arrays.
   *
   * Built by CGAL's Regular_triangulation_3 with exact predicates. Vertex ids are dense and
-  * number the points that are vertices of the triangulation along a Hilbert curve.
+  * number the points that are vertices of the triangulation along a Z-order curve.
   */
 struct Triangulation
 {
