@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "boundary.h"
 
+#include "parallel_for_each.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -95,10 +97,12 @@ Boundary
 extractBoundary (const SimplicialComplex& complex, const Retraction& x)
 {
   Boundary w;
-  for (SimplexId t = 0; t < complex.size (3); ++t)
-  {
+  // Facets of X's tetrahedra with one tetrahedron of X, in the order of the tetrahedra.
+  using Facet = std::pair<Triangle, SimplexId>;
+  const auto facets = collectInOrder<Facet> (complex.size (3), [&] (std::size_t id, std::vector<Facet>& out) {
+    const auto t = static_cast<SimplexId> (id);
     if (!x.inY ({3, t}))
-      continue;
+      return;
     for (int i = 0; i < 4; ++i)
     {
       const Simplex f = complex.facet (3, t, i);
@@ -106,27 +110,35 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
       {
         const std::uint32_t* v = complex.vertices (3, t);
         const int* o = OUTWARD_FACET[i];
-        w.triangles.push_back ({v[o[0]], v[o[1]], v[o[2]]});
-        w.triangle_ids.push_back (f.id);
+        out.push_back ({{v[o[0]], v[o[1]], v[o[2]]}, f.id});
       }
     }
+  });
+  w.triangles.reserve (facets.size ());
+  w.triangle_ids.reserve (facets.size ());
+  for (const Facet& f : facets)
+  {
+    w.triangles.push_back (f.first);
+    w.triangle_ids.push_back (f.second);
   }
-  std::vector<SimplexId> sheet;
-  for (SimplexId f = 0; f < complex.size (2); ++f)
-    if (x.inY ({2, f}) && x.cofacesInY ({2, f}) == 0)
-      sheet.push_back (f);
+
+  // The simplices of X with no coface in X, per dimension.
+  const auto principal = [&] (int k) {
+    return collectInOrder<SimplexId> (complex.size (k), [&] (std::size_t s, std::vector<SimplexId>& out) {
+      const Simplex simplex{k, static_cast<SimplexId> (s)};
+      if (x.inY (simplex) && x.cofacesInY (simplex) == 0)
+        out.push_back (simplex.id);
+    });
+  };
+  const std::vector<SimplexId> sheet = principal (2);
   orientSheets (complex, sheet, w.triangles);
   w.triangle_ids.insert (w.triangle_ids.end (), sheet.begin (), sheet.end ());
-
-  for (SimplexId e = 0; e < complex.size (1); ++e)
-    if (x.inY ({1, e}) && x.cofacesInY ({1, e}) == 0)
-    {
-      const std::uint32_t* v = complex.vertices (1, e);
-      w.dangling_edges.push_back ({v[0], v[1]});
-    }
-  for (SimplexId v = 0; v < complex.size (0); ++v)
-    if (x.inY ({0, v}) && x.cofacesInY ({0, v}) == 0)
-      w.isolated_vertices.push_back (v);
+  for (SimplexId e : principal (1))
+  {
+    const std::uint32_t* v = complex.vertices (1, e);
+    w.dangling_edges.push_back ({v[0], v[1]});
+  }
+  w.isolated_vertices = principal (0);
   return w;
 }
 

@@ -204,7 +204,10 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
   for (std::uint32_t i = 0; i < positions.size (); ++i)
     if (vertex_of_point[i] == ABSENT)
       t.hidden.push_back (i);
-  const auto id = [&] (typename Cgal::Vertex_handle v) { return vertex_of_point[v->info ()]; };
+  // From here on a vertex's info is its id (one indirection less per lookup).
+  for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
+    v->info () = vertex_of_point[v->info ()];
+  const auto id = [] (typename Cgal::Vertex_handle v) { return v->info (); };
 
   auto& top = t.top_simplices;
   switch (t.dimension)

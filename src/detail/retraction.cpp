@@ -109,7 +109,7 @@ Retraction::retractInParallel ()
                          std::size_t done = 0;
                          for (SimplexId s = range.begin (); s != range.end (); ++s)
                          {
-                           if (classification_.predecessor[k][s].id == NO_SIMPLEX)
+                           if (!hasPredecessor ({k, s}))
                              continue;
                            work.push_back ({k, s});
                            while (!work.empty ())
@@ -181,7 +181,7 @@ Retraction::retract (std::uint64_t order_seed)
   if (!seeded_)
     for (int k = 0; k < complex_.dimension (); ++k)
       for (SimplexId s = 0; s < complex_.size (k); ++s)
-        if (classification_.predecessor[k][s].id != NO_SIMPLEX)
+        if (hasPredecessor ({k, s}))
           work_.push_back ({k, s});
   seeded_ = true;
 

@@ -65,6 +65,12 @@ public:
 
 private:
   bool collapsible (Simplex v) const;
+  /** Is \a v some simplex's lowest successor? Only an equivocal one can be: its one-byte class
+    * is read first, which spares most of the predecessor array a pass over every simplex. */
+  bool hasPredecessor (Simplex v) const
+  {
+    return classification_.of (v) == SimplexClass::equivocal && classification_.predecessor[v.dim][v.id].id != NO_SIMPLEX;
+  }
   /** Removes every xi with v <= xi <= tau (v is tau's lowest successor), queueing on \a work
     * the facets that stay. CONCURRENT as for remove(). */
   template <bool CONCURRENT>

@@ -14,9 +14,6 @@ namespace pcl_wrap::detail
 namespace
 {
 
-// A tetrahedron's six edges are kept in the order of their local vertex pairs (0,1), (0,2), (0,3),
-// (1,2), (1,3), (2,3); the slot of each two-bit mask.
-constexpr int EDGE_SLOT[16] = {-1, -1, -1, 0, -1, 1, 3, -1, -1, 2, 4, -1, 5, -1, -1, -1};
 
 /** Names the edges of the top simplices of a complex of dimension 2 or 3 (vertices \a top, d + 1
   * per simplex): fills \a edge_vertices (two per edge, ascending, edges in lexicographic order)
@@ -198,24 +195,6 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
     vertices_[3] = std::move (top);
   }
-}
-
-Simplex
-SimplicialComplex::face (int k, SimplexId s, unsigned mask) const
-{
-  const int n = maskSize (mask);
-  if (n == k + 1)
-    return {k, s};
-  if (n == 1)
-    return {0, vertex (k, s, __builtin_ctz (mask))};
-  if (k == 3)
-  {
-    if (n == 3)
-      return {2, tet_triangles_[4 * std::size_t (s) + __builtin_ctz (~mask & 15u)]};
-    return {1, tet_edges_[6 * std::size_t (s) + EDGE_SLOT[mask]]};
-  }
-  // k == 2, n == 2
-  return {1, triangle_edges_[3 * std::size_t (s) + __builtin_ctz (~mask & 7u)]};
 }
 
 } // namespace pcl_wrap::detail
