@@ -84,7 +84,9 @@ TEST (Classification, FlowRelationInvariants)
       for (unsigned seed = 1; seed <= 3; ++seed)
       {
         SCOPED_TRACE (sample.name + " n " + std::to_string (n) + " seed " + std::to_string (seed));
-        expectFlowInvariants (Pipeline (sample.make (n, seed)));
+        const Pipeline pipeline (sample.make (n, seed));
+        expectFlowInvariants (pipeline);
+        expectCofaceCounts (pipeline);
       }
 }
 

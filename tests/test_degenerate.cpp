@@ -82,7 +82,9 @@ TEST (Degenerate, EveryFamilyKeepsTheInvariants)
   for (const auto& [name, points] : degenerateFamilies ())
   {
     SCOPED_TRACE (name);
-    expectFlowInvariants (Pipeline (points));
+    const Pipeline pipeline (points);
+    expectFlowInvariants (pipeline);
+    expectCofaceCounts (pipeline);
     const WrapResult r = computeWrap (points);
     expectWrapInvariants (r);
     const std::size_t expected_dimension = name == "one point" ? 0 : name == "two points" || name == "collinear" ? 1

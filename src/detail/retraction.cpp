@@ -18,7 +18,9 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
 {
   for (int k = 0; k <= 3; ++k)
     alive_[k].assign (complex.size (k), 1);
-  countCofaces ();
+  // All of Del S is in Y (omega never counts): its coface counts are the complex's.
+  for (int k = 0; k < 3; ++k)
+    counts_[k] = complex.cofaceCounts (k);
 }
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,

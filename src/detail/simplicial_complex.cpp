@@ -14,16 +14,17 @@ namespace pcl_wrap::detail
 namespace
 {
 
-
 /** Names the edges of the top simplices of a complex of dimension 2 or 3 (vertices \a top, d + 1
   * per simplex): fills \a edge_vertices (two per edge, ascending, edges in lexicographic order)
   * and \a top_edges (per top simplex, the id of its edge between local vertices (i, j), i < j,
-  * in the order (0,1), (0,2), ...). Every edge instance is bucketed by its lower vertex with its
-  * slot in \a top_edges; sorting a bucket brings an edge's instances together, and each takes the
-  * edge's id directly. In parallel; the ids depend only on the set of edges. */
+  * in the order (0,1), (0,2), ...) and \a edge_tops (per edge, the number of top simplices on
+  * it). Every edge instance is bucketed by its lower vertex with its slot in \a top_edges;
+  * sorting a bucket brings an edge's instances together, and each takes the edge's id directly.
+  * In parallel; the ids depend only on the set of edges. */
 void
 nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& top,
-           std::vector<std::uint32_t>& edge_vertices, std::vector<SimplexId>& top_edges)
+           std::vector<std::uint32_t>& edge_vertices, std::vector<SimplexId>& top_edges,
+           std::vector<std::uint32_t>& edge_tops)
 {
   const std::size_t num_top = top.size () / (d + 1), per_top = d == 3 ? 6 : 3;
   if (per_top * num_top > std::numeric_limits<std::uint32_t>::max ())
@@ -78,6 +79,7 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
 
   edge_vertices.resize (2 * std::size_t (first_id[num_vertices]));
   top_edges.resize (per_top * num_top);
+  edge_tops.assign (first_id[num_vertices], 0);
   parallelForEach (num_vertices, [&] (std::size_t a) {
     SimplexId id = first_id[a] - 1;
     for (std::size_t k = begin[a]; k < begin[a + 1]; ++k)
@@ -90,6 +92,7 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
         edge_vertices[2 * std::size_t (id) + 1] = x.other;
       }
       top_edges[x.slot] = id;
+      ++edge_tops[id]; // the bucket's own edge: no other thread counts it
     }
   });
 }
@@ -116,7 +119,10 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
   for (std::uint32_t v = 0; v < num_vertices; ++v)
     vertices_[0][v] = v;
   if (dimension == 0)
+  {
+    cofaces_[0].assign (num_vertices, 0);
     return;
+  }
 
   const std::size_t num_top = top.size () / (dimension + 1);
   if (dimension == 1)
@@ -125,6 +131,8 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       if (top[2 * e] > top[2 * e + 1])
         std::swap (top[2 * e], top[2 * e + 1]);
     vertices_[1] = std::move (top);
+    cofaces_[1].assign (size (1), 0);
+    countEdgesOfVertices ();
     return;
   }
 
@@ -135,13 +143,14 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     for (std::size_t t = 0; t < num_top; ++t)
       sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
     std::vector<SimplexId> pair_edges; // edges (0,1), (0,2), (1,2): opposite local vertex 2, 1, 0
-    nameEdges (d, num_vertices, top, vertices_[1], pair_edges);
+    nameEdges (d, num_vertices, top, vertices_[1], pair_edges, cofaces_[1]);
     vertices_[2] = std::move (top);
     triangle_edges_.resize (3 * size (2));
     parallelForEach (size (2), [&] (std::size_t t) {
       for (int i = 0; i < 3; ++i)
         triangle_edges_[3 * t + i] = pair_edges[3 * t + 2 - i];
     });
+    cofaces_[2].assign (size (2), 0);
   }
   else
   {
@@ -159,7 +168,9 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
       first_triangle[t + 1] = first_triangle[t] + names (t, 0) + names (t, 1) + names (t, 2) + names (t, 3);
     vertices_[2].resize (3 * std::size_t (first_triangle[num_top]));
     tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
-    nameEdges (d, num_vertices, top, vertices_[1], tet_edges_);
+    cofaces_[2].resize (vertices_[2].size () / 3);
+    nameEdges (d, num_vertices, top, vertices_[1], tet_edges_, cofaces_[1]);
+    std::vector<std::uint8_t> on_hull (size (1), 0); // edges of a triangle with one tetrahedron
     triangle_edges_.resize (vertices_[2].size ());
     parallelForEach (num_top, [&] (std::size_t t) {
       const std::uint32_t* v = &top[4 * t];
@@ -181,8 +192,13 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
         }
         tet_triangles_[4 * t + i] = f;
         const std::uint32_t u = neighbours[4 * t + i];
+        cofaces_[2][f] = u == ~std::uint32_t (0) ? 1 : 2;
         if (u == ~std::uint32_t (0))
+        {
+          for (int j = 0; j < 3; ++j) // several hull triangles may mark an edge: relaxed stores
+            __atomic_store_n (&on_hull[triangle_edges_[3 * std::size_t (f) + j]], std::uint8_t (1), __ATOMIC_RELAXED);
           continue;
+        }
         int j = 0;
         while (j < 4 && neighbours[4 * std::size_t (u) + j] != t)
           ++j;
@@ -194,7 +210,23 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     if (std::find (tet_triangles_.begin (), tet_triangles_.end (), NO_SIMPLEX) != tet_triangles_.end ())
       throw std::invalid_argument ("SimplicialComplex: neighbour relation not symmetric");
     vertices_[3] = std::move (top);
+    // Around an edge inside the hull, tetrahedra and triangles alternate in a closed ring; on
+    // the hull the ring is open, with one triangle more.
+    parallelForEach (size (1), [&] (std::size_t e) { cofaces_[1][e] += on_hull[e]; });
   }
+  countEdgesOfVertices ();
+}
+
+void
+SimplicialComplex::countEdgesOfVertices ()
+{
+  std::vector<std::atomic<std::uint32_t>> edges (size (0));
+  parallelForEach (size (1), [&] (std::size_t e) {
+    for (int i = 0; i < 2; ++i)
+      edges[vertices_[1][2 * e + i]].fetch_add (1, std::memory_order_relaxed);
+  });
+  cofaces_[0].resize (size (0));
+  parallelForEach (size (0), [&] (std::size_t v) { cofaces_[0][v] = edges[v].load (std::memory_order_relaxed); });
 }
 
 } // namespace pcl_wrap::detail

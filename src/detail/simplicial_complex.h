@@ -47,17 +47,25 @@ public:
   const std::uint32_t* vertices (int k, SimplexId s) const { return &vertices_[k][(k + 1) * std::size_t (s)]; }
   std::uint32_t vertex (int k, SimplexId s, int i) const { return vertices (k, s)[i]; }
 
+  /** \brief Per simplex of dimension \a k (0 to 2): how many simplices of dimension k + 1 have it
+    * as a face. */
+  const std::vector<std::uint32_t>& cofaceCounts (int k) const { return cofaces_[k]; }
+
   /** \brief The face of simplex (k, s) spanned by the local vertices in \a mask (non-empty). */
   Simplex face (int k, SimplexId s, unsigned mask) const;
   /** \brief The facet of simplex (k, s), k >= 1, opposite its local vertex \a i. */
   Simplex facet (int k, SimplexId s, int i) const;
 
 private:
+  /** Fills cofaces_[0] from the edges. */
+  void countEdgesOfVertices ();
+
   int dimension_ = -1;
   std::array<std::vector<std::uint32_t>, 4> vertices_;
   std::vector<SimplexId> tet_triangles_;      // 4 per tetrahedron, opposite local vertex i
   std::vector<SimplexId> tet_edges_;          // 6 per tetrahedron, see EDGE_SLOT
   std::vector<SimplexId> triangle_edges_;     // 3 per triangle, opposite local vertex i
+  std::array<std::vector<std::uint32_t>, 3> cofaces_; // see cofaceCounts()
 };
 
 /** \brief Number of local vertices in a mask. */

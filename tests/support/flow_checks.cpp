@@ -52,4 +52,29 @@ expectFlowInvariants (const Pipeline& p)
   EXPECT_EQ (c.extra_predecessors, 0u);
 }
 
+void
+expectCofaceCounts (const Pipeline& p)
+{
+  std::map<Tuple, std::uint32_t> facets_named;
+  forEachSimplex (p, [&] (Simplex s) {
+    const Tuple t = p.tuple (s);
+    for (std::size_t drop = 0; s.dim > 0 && drop < t.size (); ++drop)
+    {
+      Tuple facet = t;
+      facet.erase (facet.begin () + drop);
+      ++facets_named[facet];
+    }
+  });
+  for (int k = 0; k < 3; ++k)
+  {
+    const auto& counts = p.complex.cofaceCounts (k);
+    ASSERT_EQ (counts.size (), p.complex.size (k)) << "dimension " << k;
+    for (detail::SimplexId s = 0; s < counts.size (); ++s)
+    {
+      const auto it = facets_named.find (p.tuple ({k, s}));
+      ASSERT_EQ (counts[s], it == facets_named.end () ? 0u : it->second) << "dimension " << k << " simplex " << s;
+    }
+  }
+}
+
 } // namespace pcl_wrap::test

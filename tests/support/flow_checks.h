@@ -33,4 +33,9 @@ predecessorsBySuccession (const Pipeline& p);
 void
 expectFlowInvariants (const Pipeline& p);
 
+/** Asserts (gtest): the complex's coface counts are those of its simplices' vertex tuples: each
+  * simplex of dimension k < 3 lies in as many (k+1)-simplices as name it among their facets. */
+void
+expectCofaceCounts (const Pipeline& p);
+
 } // namespace pcl_wrap::test
