@@ -65,16 +65,22 @@ compareNearSphere (int n, double scale, double offset, double weight, std::mt199
     ASSERT_EQ (predicates.insideSmallestOrthosphere (ids.data (), n, static_cast<std::uint32_t> (n)),
                CGAL::is_negative (power_of_q))
         << n << " points, scale " << scale << ", offset " << offset << ", weight " << weight << ", k " << k;
-    // The same question asked with all of the simplex (sphere points + q)'s others at once.
-    std::vector<std::uint32_t> simplex = ids;
-    simplex.push_back (static_cast<std::uint32_t> (n));
-    const unsigned inside = predicates.insideOppositeFacets (simplex.data (), n);
-    ASSERT_EQ (bool (inside & (1u << n)), CGAL::is_negative (power_of_q)) << "batched, " << n << " points, scale " << scale;
-    for (int i = 0; i < n; ++i)
+    // The same question asked with all of the simplex (sphere points + q)'s others at once, with
+    // q last and first (a tetrahedron's filter treats its first vertex apart).
+    for (const bool q_first : {false, true})
     {
-      std::vector<std::uint32_t> facet = simplex;
-      facet.erase (facet.begin () + i);
-      ASSERT_EQ (bool (inside & (1u << i)), predicates.insideSmallestOrthosphere (facet.data (), n, simplex[i]));
+      std::vector<std::uint32_t> simplex = ids;
+      simplex.insert (q_first ? simplex.begin () : simplex.end (), static_cast<std::uint32_t> (n));
+      const int q_slot = q_first ? 0 : n;
+      const unsigned inside = predicates.insideOppositeFacets (simplex.data (), n);
+      ASSERT_EQ (bool (inside & (1u << q_slot)), CGAL::is_negative (power_of_q))
+          << "batched, " << n << " points, scale " << scale << ", q first " << q_first;
+      for (int i = 0; i <= n; ++i)
+      {
+        std::vector<std::uint32_t> facet = simplex;
+        facet.erase (facet.begin () + i);
+        ASSERT_EQ (bool (inside & (1u << i)), predicates.insideSmallestOrthosphere (facet.data (), n, simplex[i]));
+      }
     }
     ++tally.compared;
   }

@@ -129,6 +129,56 @@ circumsphereSideFiltered (const BarePoint& a, const BarePoint& b, const BarePoin
   return certainSign (value, magnitude, 12);
 }
 
+/** circumsphereSideFiltered for each vertex p_i of a tetrahedron against the facet opposite it,
+  * into \a sign[i], all four from one circumcentre. With equal weights p_i is inside the
+  * smallest orthosphere of the opposite facet iff the tetrahedron's circumcentre lies beyond that
+  * facet, that is iff its barycentric coordinate lambda_i is negative. With u_j = p_j - p_0,
+  * c_1 = u_2 x u_3, c_2 = u_3 x u_1, c_3 = u_1 x u_2, D = u_1 . c_1 and
+  * N = |u_1|^2 c_1 + |u_2|^2 c_2 + |u_3|^2 c_3, the circumcentre is p_0 + N / (2 D), so
+  * lambda_j = N . c_j / (2 D^2) for j = 1..3 and lambda_0 = (2 D^2 - sum_j N . c_j) / (2 D^2):
+  * the signs of N . c_j and of 2 D^2 - sum_j N . c_j. Each is trusted as in certainSign; an
+  * undecided one is 0 (the exact predicate decides it), and all are 0 when a difference u_j is
+  * outside the filter's range. */
+void
+tetrahedronSidesFiltered (const BarePoint& p0, const BarePoint& p1, const BarePoint& p2, const BarePoint& p3, int* sign)
+{
+  const BarePoint* p[4] = {&p0, &p1, &p2, &p3};
+  double u[4][3], au[4][3];
+  for (int j = 1; j < 4; ++j)
+  {
+    for (int c = 0; c < 3; ++c)
+      u[j][c] = (*p[j])[c] - p0[c], au[j][c] = std::abs (u[j][c]);
+    if (!inFilterRange (u[j], 3))
+      return;
+  }
+  // Cross products c_j (and over absolute values) of the other two, cyclically.
+  double cr[4][3], acr[4][3];
+  for (int j = 1; j < 4; ++j)
+  {
+    const int k = j % 3 + 1, l = k % 3 + 1;
+    cross (u[k], u[l], cr[j]);
+    cross (au[k], au[l], acr[j], true);
+  }
+  double n[3], an[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    n[c] = dot (u[1], u[1]) * cr[1][c] + dot (u[2], u[2]) * cr[2][c] + dot (u[3], u[3]) * cr[3][c];
+    an[c] = dot (u[1], u[1]) * acr[1][c] + dot (u[2], u[2]) * acr[2][c] + dot (u[3], u[3]) * acr[3][c];
+  }
+  const double d = dot (u[1], cr[1]), ad = dot (au[1], acr[1]);
+  double sum = 0.0, asum = 0.0;
+  for (int j = 1; j < 4; ++j)
+  {
+    const double l = dot (n, cr[j]), al = dot (an, acr[j]);
+    // Depth: difference 1, cross product 2 more, |u|^2 c 1 more over |u|^2's 4, N's sums 2
+    // more: 7; the dot with c_j 3 more: 10.
+    sign[j] = certainSign (l, al, 10);
+    sum += l, asum += al;
+  }
+  // Depth: D is 6 (difference, cross, dot), D^2 7; the sum of the three 12; the difference 13.
+  sign[0] = certainSign (2.0 * d * d - sum, 2.0 * ad * ad + asum, 13);
+}
+
 /** A weight strictly larger than w, computed exactly (any increase will do: the predicate is
   * affine in the weight, so only the sign of the change matters). */
 double
@@ -203,6 +253,12 @@ unsigned
 PowerPredicates::insideOppositeFacets (const std::uint32_t* v, int k) const
 {
   const auto& pts = points_->points;
+  // A tetrahedron's four answers come from one filter; what a filter cannot decide goes the
+  // exact way.
+  int tetrahedron[4] = {0, 0, 0, 0};
+  if (uniform_weights_ && k == 3)
+    tetrahedronSidesFiltered (pts[v[0]].point (), pts[v[1]].point (), pts[v[2]].point (), pts[v[3]].point (),
+                              tetrahedron);
   unsigned inside = 0;
   for (int i = 0; i <= k; ++i)
   {
@@ -211,13 +267,9 @@ PowerPredicates::insideOppositeFacets (const std::uint32_t* v, int k) const
     for (int j = 0; j <= k; ++j)
       if (j != i)
         facet[n++] = v[j];
-    // The filters inline here; what they cannot decide goes the exact way.
-    int sign = 0;
+    int sign = tetrahedron[i];
     if (uniform_weights_ && k == 2)
       sign = diametralSideFiltered (pts[facet[0]].point (), pts[facet[1]].point (), pts[v[i]].point ());
-    else if (uniform_weights_ && k == 3)
-      sign = circumsphereSideFiltered (pts[facet[0]].point (), pts[facet[1]].point (), pts[facet[2]].point (),
-                                       pts[v[i]].point ());
     if (sign != 0 ? sign < 0 : insideSmallestOrthosphere (facet, n, v[i]))
       inside |= 1u << i;
   }
