@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -45,6 +46,30 @@ collectInOrder (std::size_t n, const Emit& emit)
   for (auto& part : parts)
     all.insert (all.end (), part.begin (), part.end ());
   return all;
+}
+
+/** \brief A counting sort on TBB's threads: each (i, put) calls put (bucket, item) for the items of
+  * every i in [0, n); returns the items bucket by bucket, bucket b in [begin[b], begin[b + 1]),
+  * in no particular order within a bucket (sort it if the order matters). */
+template <class T, class Each>
+std::vector<T>
+bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std::vector<std::size_t>& begin)
+{
+  std::vector<std::atomic<std::size_t>> next (num_buckets + 1);
+  parallelForEach (n, [&] (std::size_t i) {
+    each (i, [&] (std::size_t b, const T&) { next[b + 1].fetch_add (1, std::memory_order_relaxed); });
+  });
+  begin.assign (num_buckets + 1, 0);
+  for (std::size_t b = 0; b < num_buckets; ++b)
+  {
+    begin[b + 1] = begin[b] + next[b + 1].load (std::memory_order_relaxed);
+    next[b].store (begin[b], std::memory_order_relaxed);
+  }
+  std::vector<T> items (begin[num_buckets]);
+  parallelForEach (n, [&] (std::size_t i) {
+    each (i, [&] (std::size_t b, const T& item) { items[next[b].fetch_add (1, std::memory_order_relaxed)] = item; });
+  });
+  return items;
 }
 
 } // namespace pcl_wrap::detail

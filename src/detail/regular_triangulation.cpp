@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -116,24 +115,27 @@ extractTetrahedra (Cgal& rt, const Id& id, Triangulation& t)
 
   // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
   const std::size_t num_vertices = t.point_of_vertex.size ();
-  std::vector<std::size_t> begin (num_vertices + 1, 0);
-  for (std::size_t j = 0; j < n; ++j)
-    ++begin[canonical[4 * j] + 1];
-  std::partial_sum (begin.begin (), begin.end (), begin.begin ());
-  std::vector<std::uint32_t> order (n);
+  // The key travels with the tetrahedron, so that sorting a bucket reads nothing else.
+  struct Keyed
   {
-    std::vector<std::size_t> next (begin.begin (), begin.end () - 1);
-    for (std::size_t j = 0; j < n; ++j)
-      order[next[canonical[4 * j]]++] = static_cast<std::uint32_t> (j);
-  }
-  const auto key = [&] (std::uint32_t j) {
-    const std::uint32_t* v = &canonical[4 * std::size_t (j)];
-    return std::array<std::uint32_t, 3>{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])};
+    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
+    std::uint32_t tetrahedron;
+    bool operator< (const Keyed& o) const { return key < o.key; }
   };
+  std::vector<std::size_t> begin;
+  std::vector<Keyed> keyed = bucketInParallel<Keyed> (
+      n, num_vertices,
+      [&] (std::size_t j, auto put) {
+        const std::uint32_t* v = &canonical[4 * j];
+        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
+      },
+      begin);
   parallelForEach (num_vertices, [&] (std::size_t a) {
-    std::sort (order.begin () + begin[a], order.begin () + begin[a + 1],
-               [&] (std::uint32_t x, std::uint32_t y) { return key (x) < key (y); });
+    std::sort (keyed.begin () + begin[a], keyed.begin () + begin[a + 1]);
   });
+  std::vector<std::uint32_t> order (n);
+  parallelForEach (n, [&] (std::size_t r) { order[r] = keyed[r].tetrahedron; });
+  keyed = {};
 
   parallelForEach (n, [&] (std::size_t r) { cells[order[r]]->info () = static_cast<std::uint32_t> (r); });
   t.top_simplices.resize (4 * n);

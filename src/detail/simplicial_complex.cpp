@@ -35,34 +35,18 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
     std::uint32_t slot;  // in top_edges
     bool operator< (const Instance& o) const { return other < o.other; }
   };
-  const auto each = [&] (std::size_t t, auto emit) {
+  const auto each = [&] (std::size_t t, auto put) {
     std::uint32_t slot = static_cast<std::uint32_t> (per_top * t);
     for (int i = 0; i <= d; ++i)
       for (int j = i + 1; j <= d; ++j)
       {
         const std::uint32_t a = top[(d + 1) * t + i], b = top[(d + 1) * t + j];
-        emit (std::min (a, b), Instance{std::max (a, b), slot++});
+        put (std::min (a, b), Instance{std::max (a, b), slot++});
       }
   };
 
-  std::vector<std::size_t> begin (num_vertices + 1, 0);
-  {
-    std::vector<std::atomic<std::size_t>> count (num_vertices + 1);
-    parallelForEach (num_top, [&] (std::size_t t) {
-      each (t, [&] (std::uint32_t a, Instance) { count[a + 1].fetch_add (1, std::memory_order_relaxed); });
-    });
-    for (std::uint32_t a = 0; a < num_vertices; ++a)
-      begin[a + 1] = begin[a] + count[a + 1].load (std::memory_order_relaxed);
-  }
-  std::vector<Instance> instances (begin[num_vertices]);
-  {
-    std::vector<std::atomic<std::size_t>> next (num_vertices);
-    for (std::uint32_t a = 0; a < num_vertices; ++a)
-      next[a].store (begin[a], std::memory_order_relaxed);
-    parallelForEach (num_top, [&] (std::size_t t) {
-      each (t, [&] (std::uint32_t a, Instance x) { instances[next[a].fetch_add (1, std::memory_order_relaxed)] = x; });
-    });
-  }
+  std::vector<std::size_t> begin;
+  std::vector<Instance> instances = bucketInParallel<Instance> (num_top, num_vertices, each, begin);
 
   // Sort each bucket and count its distinct edges; a prefix sum gives each bucket its first id.
   std::vector<SimplexId> first_id (num_vertices + 1, 0);
