@@ -167,9 +167,10 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   clock.stageDone ("triangulation");
 
   // Shared: a filtration in the result keeps the complex and the classes.
-  const auto complex_kept = std::make_shared<const SimplicialComplex> (
-      triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
-      std::move (triangulation.top_simplices), triangulation.neighbours);
+  SimplicialComplex built (triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
+                           std::move (triangulation.top_simplices), triangulation.neighbours);
+  auto coface_counts = built.releaseCofaceCounts (); // the retraction's, not copied
+  const auto complex_kept = std::make_shared<const SimplicialComplex> (std::move (built));
   const SimplicialComplex& complex = *complex_kept;
   triangulation = {};
   clock.stageDone ("complex");
@@ -183,7 +184,7 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
       ++stats.simplices[k][static_cast<int> (c)];
   clock.stageDone ("classification");
 
-  Retraction x (complex, classification);
+  Retraction x (complex, classification, std::move (coface_counts));
   stats.collapses = x.retract ();
   clock.stageDone ("collapse");
   std::shared_ptr<const WrapFiltration> filtration;

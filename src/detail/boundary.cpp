@@ -97,38 +97,53 @@ Boundary
 extractBoundary (const SimplicialComplex& complex, const Retraction& x)
 {
   Boundary w;
-  // Facets of X's tetrahedra with one tetrahedron of X, in the order of the tetrahedra.
-  using Facet = std::pair<Triangle, SimplexId>;
-  const auto facets = collectInOrder<Facet> (complex.size (3), [&] (std::size_t id, std::vector<Facet>& out) {
-    const auto t = static_cast<SimplexId> (id);
-    if (!x.inY ({3, t}))
-      return;
-    for (int i = 0; i < 4; ++i)
-    {
-      const Simplex f = complex.facet (3, t, i);
-      if (x.cofacesInY (f) == 1)
-      {
+  // Facets of X's tetrahedra with one tetrahedron of X, in the order of the tetrahedra: the
+  // first pass finds them (a mask per tetrahedron), the second writes them.
+  std::vector<std::uint8_t> facets (complex.size (3), 0);
+  fillInOrder (
+      complex.size (3),
+      [&] (std::size_t id) {
+        const auto t = static_cast<SimplexId> (id);
+        if (x.inY ({3, t}))
+          for (int i = 0; i < 4; ++i)
+            if (x.cofacesInY (complex.facet (3, t, i)) == 1)
+              facets[t] |= 1u << i;
+        return std::size_t (maskSize (facets[t]));
+      },
+      [&] (std::size_t total) {
+        w.triangles.resize (total);
+        w.triangle_ids.resize (total);
+      },
+      [&] (std::size_t id, std::size_t at) {
+        const auto t = static_cast<SimplexId> (id);
         const std::uint32_t* v = complex.vertices (3, t);
-        const int* o = OUTWARD_FACET[i];
-        out.push_back ({{v[o[0]], v[o[1]], v[o[2]]}, f.id});
-      }
-    }
-  });
-  w.triangles.reserve (facets.size ());
-  w.triangle_ids.reserve (facets.size ());
-  for (const Facet& f : facets)
-  {
-    w.triangles.push_back (f.first);
-    w.triangle_ids.push_back (f.second);
-  }
+        for (int i = 0; i < 4; ++i)
+          if (facets[t] & (1u << i))
+          {
+            const int* o = OUTWARD_FACET[i];
+            w.triangles[at] = {v[o[0]], v[o[1]], v[o[2]]};
+            w.triangle_ids[at++] = complex.facet (3, t, i).id;
+          }
+        return at;
+      });
+  facets = {};
 
   // The simplices of X with no coface in X, per dimension.
   const auto principal = [&] (int k) {
-    return collectInOrder<SimplexId> (complex.size (k), [&] (std::size_t s, std::vector<SimplexId>& out) {
+    const auto is_principal = [&] (std::size_t s) {
       const Simplex simplex{k, static_cast<SimplexId> (s)};
-      if (x.inY (simplex) && x.cofacesInY (simplex) == 0)
-        out.push_back (simplex.id);
-    });
+      return x.inY (simplex) && x.cofacesInY (simplex) == 0;
+    };
+    std::vector<SimplexId> found;
+    fillInOrder (
+        complex.size (k), [&] (std::size_t s) { return std::size_t (is_principal (s)); },
+        [&] (std::size_t total) { found.resize (total); },
+        [&] (std::size_t s, std::size_t at) {
+          if (is_principal (s))
+            found[at++] = static_cast<SimplexId> (s);
+          return at;
+        });
+    return found;
   };
   const std::vector<SimplexId> sheet = principal (2);
   orientSheets (complex, sheet, w.triangles);

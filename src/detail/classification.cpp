@@ -20,7 +20,7 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   {
     c.classes[k].assign (complex.size (k), SimplexClass::centered);
     c.lowest_successor[k].assign (complex.size (k), 0);
-    c.predecessor[k].assign (complex.size (k), Simplex{-1, NO_SIMPLEX});
+    c.predecessor[k].assign (k < 3 ? complex.size (k) : 0, Simplex{-1, NO_SIMPLEX});
   }
   if (d <= 0)
     return c; // no simplex but a lone vertex: a sink

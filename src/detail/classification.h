@@ -25,7 +25,8 @@ struct Classification
   std::array<std::vector<std::uint8_t>, 4> lowest_successor;
   /** \brief Per equivocal simplex: the confident simplex whose lowest successor it is.
     * {-1, NO_SIMPLEX} when there is none (which would break Claim 8; the tests check it never
-    * happens). */
+    * happens). For dimensions 0 to 2 only: a tetrahedron has no coface to be attached to, so it
+    * is never equivocal, and predecessor[3] is empty. */
   std::array<std::vector<Simplex>, 4> predecessor;
   /** \brief Equivocal simplices that are the lowest successor of more than one confident
     * simplex (also a broken Claim 8; counted, not hidden). */

@@ -25,27 +25,30 @@ parallelForEach (std::size_t n, const F& f, std::size_t grain = 4096)
   });
 }
 
-/** \brief What emit(i, out) appends to \a out for every i in [0, n), in the order of i: each
-  * chunk of indices fills its own vector on TBB's threads, and the chunks are joined in order,
-  * so the result is that of one sequential pass. */
-template <class T, class Emit>
-std::vector<T>
-collectInOrder (std::size_t n, const Emit& emit)
+/** \brief Writes what each i in [0, n) contributes to an output, in the order of i, on TBB's
+  * threads: a first pass over chunks of indices adds up count(i), the number of items i writes;
+  * resize(total) then sizes the outputs; a second pass calls write(i, offset), which writes i's
+  * items from offset on and returns the offset after them. The result is that of one sequential
+  * pass, with no intermediate copy. */
+template <class Count, class Resize, class Write>
+void
+fillInOrder (std::size_t n, const Count& count, const Resize& resize, const Write& write)
 {
   constexpr std::size_t CHUNK = 1 << 16;
-  std::vector<std::vector<T>> parts ((n + CHUNK - 1) / CHUNK);
-  parallelForEach (parts.size (), [&] (std::size_t c) {
+  const std::size_t chunks = (n + CHUNK - 1) / CHUNK;
+  std::vector<std::size_t> offset (chunks + 1, 0);
+  parallelForEach (chunks, [&] (std::size_t c) {
     for (std::size_t i = c * CHUNK; i < n && i < (c + 1) * CHUNK; ++i)
-      emit (i, parts[c]);
+      offset[c + 1] += count (i);
   }, 1);
-  std::size_t total = 0;
-  for (const auto& part : parts)
-    total += part.size ();
-  std::vector<T> all;
-  all.reserve (total);
-  for (auto& part : parts)
-    all.insert (all.end (), part.begin (), part.end ());
-  return all;
+  for (std::size_t c = 0; c < chunks; ++c)
+    offset[c + 1] += offset[c];
+  resize (offset[chunks]);
+  parallelForEach (chunks, [&] (std::size_t c) {
+    std::size_t at = offset[c];
+    for (std::size_t i = c * CHUNK; i < n && i < (c + 1) * CHUNK; ++i)
+      at = write (i, at);
+  }, 1);
 }
 
 /** \brief A counting sort on TBB's threads: each (i, put) calls put (bucket, item) for the items of

@@ -18,9 +18,20 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
 {
   for (int k = 0; k <= 3; ++k)
     alive_[k].assign (complex.size (k), 1);
-  // All of Del S is in Y (omega never counts): its coface counts are the complex's.
+  // All of Del S is in Y (omega never counts): its coface counts are the complex's, unless
+  // they were handed over already.
   for (int k = 0; k < 3; ++k)
     counts_[k] = complex.cofaceCounts (k);
+  if (counts_[0].size () != complex.size (0))
+    countCofaces ();
+}
+
+Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
+                        std::array<std::vector<std::uint32_t>, 3> coface_counts)
+  : complex_ (complex), classification_ (classification), counts_ (std::move (coface_counts))
+{
+  for (int k = 0; k <= 3; ++k)
+    alive_[k].assign (complex.size (k), 1);
 }
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,

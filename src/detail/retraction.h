@@ -25,6 +25,10 @@ class Retraction
 public:
   Retraction (const SimplicialComplex& complex, const Classification& classification);
 
+  /** \brief The same, taking over the counts of SimplicialComplex::releaseCofaceCounts(). */
+  Retraction (const SimplicialComplex& complex, const Classification& classification,
+              std::array<std::vector<std::uint32_t>, 3> coface_counts);
+
   /** \brief Y = the simplices for which \a in_y is true (a subcomplex, e.g. X(delta) of the wrap
     * filtration), with its coface counts, for boundary extraction or further collapses. */
   Retraction (const SimplicialComplex& complex, const Classification& classification,

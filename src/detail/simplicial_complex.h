@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -50,6 +51,9 @@ public:
   /** \brief Per simplex of dimension \a k (0 to 2): how many simplices of dimension k + 1 have it
     * as a face. */
   const std::vector<std::uint32_t>& cofaceCounts (int k) const { return cofaces_[k]; }
+  /** \brief Hands the coface counts over (to a retraction, which would copy them otherwise);
+    * cofaceCounts() is empty afterwards. */
+  std::array<std::vector<std::uint32_t>, 3> releaseCofaceCounts () { return std::exchange (cofaces_, {}); }
 
   /** \brief The face of simplex (k, s) spanned by the local vertices in \a mask (non-empty). */
   Simplex face (int k, SimplexId s, unsigned mask) const;
