@@ -65,13 +65,13 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
   top_edges.resize (per_top * num_top);
   edge_tops.assign (first_id[num_vertices], 0);
   parallelForEach (num_vertices, [&] (std::size_t a) {
-    SimplexId id = first_id[a] - 1;
+    SimplexId next = first_id[a], id = NO_SIMPLEX;
     for (std::size_t k = begin[a]; k < begin[a + 1]; ++k)
     {
       const Instance& x = instances[k];
       if (k == begin[a] || x.other != instances[k - 1].other)
       {
-        ++id;
+        id = next++;
         edge_vertices[2 * std::size_t (id)] = static_cast<std::uint32_t> (a);
         edge_vertices[2 * std::size_t (id) + 1] = x.other;
       }

@@ -14,8 +14,9 @@ namespace pcl_wrap::detail
 using SimplexId = std::uint32_t;
 constexpr SimplexId NO_SIMPLEX = ~SimplexId (0);
 
-/** \brief A simplex named by its dimension and its index in that dimension. */
-struct Simplex
+/** \brief A simplex named by its dimension and its index in that dimension. Aligned as one 8-byte
+  * word, so that atomic operations on it compile to single instructions. */
+struct alignas (8) Simplex
 {
   int dim;
   SimplexId id;
