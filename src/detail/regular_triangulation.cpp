@@ -264,8 +264,10 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
                   : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted)
                              : triangulateWith<Regular<CGAL::Sequential_tag>> (positions, weighted);
   // The parallel triangulation allocates through TBB's allocator, which keeps freed memory for
-  // reuse; give it back so that the later stages do not sit on top of it.
-  scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+  // reuse; give it back so that the later stages do not sit on top of it. (Only then: asked
+  // before it ever allocated, the allocator crashes.)
+  if (parallel)
+    scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
   return t;
 }
 

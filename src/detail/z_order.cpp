@@ -39,24 +39,24 @@ zOrder (const std::vector<Point3>& points)
   for (const Point3& p : points)
     for (int c = 0; c < 3; ++c)
       low[c] = std::min (low[c], p[c]), high[c] = std::max (high[c], p[c]);
-  // Cells per unit length on each axis; the extent may overflow to infinity for huge spreads,
-  // and then the scale is 0 and that axis orders nothing (any order is correct, only slower).
+  // An axis whose extent overflows to infinity orders nothing (any order is correct, only
+  // slower); otherwise a point's place along it, (p - low) / extent, lies in [0, 1], as the
+  // rounded difference never exceeds the rounded extent.
   constexpr double CELLS = 0x1p21 - 1;
-  double scale[3];
+  double extent[3];
   for (int c = 0; c < 3; ++c)
-  {
-    const double extent = high[c] - low[c];
-    scale[c] = extent > 0 && extent < std::numeric_limits<double>::infinity () ? CELLS / extent : 0.0;
-  }
+    extent[c] = high[c] - low[c];
+  const auto cell = [&] (double x, int c) -> std::uint64_t {
+    if (!(extent[c] > 0 && extent[c] < std::numeric_limits<double>::infinity ()))
+      return 0;
+    return static_cast<std::uint64_t> (std::clamp ((x - low[c]) / extent[c], 0.0, 1.0) * CELLS);
+  };
 
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys (points.size ());
   parallelForEach (points.size (), [&] (std::size_t i) {
     std::uint64_t key = 0;
     for (int c = 0; c < 3; ++c)
-    {
-      const double cell = std::clamp ((points[i][c] - low[c]) * scale[c], 0.0, CELLS);
-      key |= spread (static_cast<std::uint64_t> (cell)) << c;
-    }
+      key |= spread (cell (points[i][c], c)) << c;
     keys[i] = {key, static_cast<std::uint32_t> (i)};
   });
   tbb::parallel_sort (keys.begin (), keys.end ());

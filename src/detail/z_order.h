@@ -10,7 +10,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief The indices of \a points along a Z-order (Morton) curve through their bounding box, 21
+/** \brief The indices of \a points (finite) along a Z-order (Morton) curve through their bounding box, 21
   * bits per axis; points in one cell of that grid by index. Nearby points get nearby positions,
   * which is all the order is for: arrays indexed in it stay in cache. It depends only on the
   * points. Its keys sort in parallel, several times faster than CGAL's Hilbert sort. */
