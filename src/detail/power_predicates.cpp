@@ -159,11 +159,12 @@ tetrahedronSidesFiltered (const BarePoint& p0, const BarePoint& p1, const BarePo
     cross (u[k], u[l], cr[j]);
     cross (au[k], au[l], acr[j], true);
   }
+  const double uu[4] = {0.0, dot (u[1], u[1]), dot (u[2], u[2]), dot (u[3], u[3])};
   double n[3], an[3];
   for (int c = 0; c < 3; ++c)
   {
-    n[c] = dot (u[1], u[1]) * cr[1][c] + dot (u[2], u[2]) * cr[2][c] + dot (u[3], u[3]) * cr[3][c];
-    an[c] = dot (u[1], u[1]) * acr[1][c] + dot (u[2], u[2]) * acr[2][c] + dot (u[3], u[3]) * acr[3][c];
+    n[c] = uu[1] * cr[1][c] + uu[2] * cr[2][c] + uu[3] * cr[3][c];
+    an[c] = uu[1] * acr[1][c] + uu[2] * acr[2][c] + uu[3] * acr[3][c];
   }
   const double d = dot (u[1], cr[1]), ad = dot (au[1], acr[1]);
   double sum = 0.0, asum = 0.0;

@@ -151,18 +151,16 @@ extractTetrahedra (Cgal& rt, const Id& id, Triangulation& t)
   });
 }
 
-/** Whether the (distinct) points span space, decided by exact orientation tests. */
+/** Whether the \a n distinct points \a point (i) span space, decided by exact orientation tests. */
+template <class Point>
 bool
-spanSpace (const std::vector<Point3>& positions)
+spanSpace (std::size_t n, const Point& point)
 {
-  const auto point = [&] (std::size_t i) {
-    return BarePoint (positions[i][0], positions[i][1], positions[i][2]);
-  };
   std::size_t i = 2;
-  while (i < positions.size () && CGAL::collinear (point (0), point (1), point (i)))
+  while (i < n && CGAL::collinear (point (0), point (1), point (i)))
     ++i;
   const std::size_t third = i;
-  for (++i; i < positions.size (); ++i)
+  for (++i; i < n; ++i)
     if (CGAL::orientation (point (0), point (1), point (third), point (i)) != CGAL::COPLANAR)
       return true;
   return false;
@@ -256,7 +254,7 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   };
   const auto weighted = [&] (std::uint32_t i) { return WeightedPoint (point (i), weights[i]); };
   const bool equal_weights = std::all_of (weights.begin (), weights.end (), [&] (double w) { return w == weights[0]; });
-  const bool delaunay = equal_weights && spanSpace (positions);
+  const bool delaunay = equal_weights && spanSpace (positions.size (), point);
   const bool parallel = positions.size () >= PARALLEL_INSERTION_MIN_POINTS &&
                         tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism) > 1;
   Triangulation t = delaunay ? parallel ? triangulateWith<Delaunay<CGAL::Parallel_tag>> (positions, point)

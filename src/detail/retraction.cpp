@@ -14,24 +14,19 @@
 namespace pcl_wrap::detail
 {
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification)
-  : complex_ (complex), classification_ (classification)
-{
-  for (int k = 0; k <= 3; ++k)
-    alive_[k].assign (complex.size (k), 1);
-  // All of Del S is in Y (omega never counts): its coface counts are the complex's, unless
-  // they were handed over already.
-  for (int k = 0; k < 3; ++k)
-    counts_[k] = complex.cofaceCounts (k);
-  if (counts_[0].size () != complex.size (0))
-    countCofaces ();
-}
+  : Retraction (complex, classification, {complex.cofaceCounts (0), complex.cofaceCounts (1), complex.cofaceCounts (2)})
+{}
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
                         std::array<std::vector<std::uint32_t>, 3> coface_counts)
   : complex_ (complex), classification_ (classification), counts_ (std::move (coface_counts))
 {
+  // All of Del S is in Y (omega never counts), so its coface counts are the complex's; when they
+  // come empty (the complex handed its own over to another retraction), they are counted here.
   for (int k = 0; k <= 3; ++k)
     alive_[k].assign (complex.size (k), 1);
+  if (counts_[0].size () != complex.size (0))
+    countCofaces ();
 }
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,

@@ -176,13 +176,14 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
         }
         tet_triangles_[4 * t + i] = f;
         const std::uint32_t u = neighbours[4 * t + i];
-        cofaces_[2][f] = u == ~std::uint32_t (0) ? 1 : 2;
         if (u == ~std::uint32_t (0))
         {
+          cofaces_[2][f] = 1;
           for (int j = 0; j < 3; ++j) // several hull triangles may mark an edge: relaxed stores
             __atomic_store_n (&on_hull[triangle_edges_[3 * std::size_t (f) + j]], std::uint8_t (1), __ATOMIC_RELAXED);
           continue;
         }
+        cofaces_[2][f] = 2;
         int j = 0;
         while (j < 4 && neighbours[4 * std::size_t (u) + j] != t)
           ++j;
