@@ -5,8 +5,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <atomic>
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -51,26 +53,91 @@ fillInOrder (std::size_t n, const Count& count, const Resize& resize, const Writ
   }, 1);
 }
 
-/** \brief A counting sort on TBB's threads: each (i, put) calls put (bucket, item) for the items of
-  * every i in [0, n); returns the items bucket by bucket, bucket b in [begin[b], begin[b + 1]),
-  * in no particular order within a bucket (sort it if the order matters). */
-template <class T, class Each>
-std::vector<T>
-bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std::vector<std::size_t>& begin)
+/** \brief Does nothing with a bucket: bucketInParallel's default last step. */
+struct LeaveBucket
 {
-  std::vector<std::atomic<std::size_t>> next (num_buckets + 1);
-  parallelForEach (n, [&] (std::size_t i) {
-    each (i, [&] (std::size_t b, const T&) { next[b + 1].fetch_add (1, std::memory_order_relaxed); });
-  });
-  begin.assign (num_buckets + 1, 0);
-  for (std::size_t b = 0; b < num_buckets; ++b)
-  {
-    begin[b + 1] = begin[b] + next[b + 1].load (std::memory_order_relaxed);
-    next[b].store (begin[b], std::memory_order_relaxed);
-  }
-  std::vector<T> items (begin[num_buckets]);
-  parallelForEach (n, [&] (std::size_t i) {
-    each (i, [&] (std::size_t b, const T& item) { items[next[b].fetch_add (1, std::memory_order_relaxed)] = item; });
+  template <class It>
+  void operator() (std::size_t, It, It) const {}
+};
+
+/** \brief A stable counting sort on TBB's threads, without atomics: each (i, put) calls put (bucket,
+  * item) for the items of every i in [0, n); returns the items bucket by bucket, bucket b in
+  * [begin[b], begin[b + 1]), within a bucket in the order of i and put. Then \a finish (b, first,
+  * last) is called on every bucket while it is still in cache (to sort it, say).
+  *
+  * Two levels. Runs of 2^shift consecutive buckets form a few thousand coarse buckets, so that
+  * each chunk of indices counts its items per coarse bucket in a small histogram of its own;
+  * prefix sums over (coarse bucket, chunk) place every chunk's items in order. Each coarse bucket,
+  * a few hundred kilobytes, is then sorted by its fine buckets in cache. (One atomic counter per
+  * bucket, as before, was slower: every put was a cache miss the core had to wait for.) */
+template <class T, class Each, class Finish = LeaveBucket>
+std::vector<T>
+bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std::vector<std::size_t>& begin,
+                  const Finish& finish = {})
+{
+  int shift = 0;
+  while ((num_buckets >> shift) > 4096 && shift < 16)
+    ++shift;
+  const std::size_t fine_mask = (std::size_t (1) << shift) - 1;
+  const std::size_t coarse = (num_buckets >> shift) + 1;
+  const std::size_t chunks = std::min<std::size_t> ((n + 1023) / 1024, 256);
+  const auto chunk_begin = [&] (std::size_t c) { return c * n / chunks; };
+
+  // at[c * coarse + g]: chunk c's items in coarse bucket g, then where the next of them goes.
+  std::vector<std::size_t> at (chunks * coarse, 0);
+  parallelForEach (chunks, [&] (std::size_t c) {
+    std::size_t* count = &at[c * coarse];
+    for (std::size_t i = chunk_begin (c); i < chunk_begin (c + 1); ++i)
+      each (i, [&] (std::size_t b, const T&) { ++count[b >> shift]; });
+  }, 1);
+  std::vector<std::size_t> coarse_begin (coarse + 1, 0);
+  parallelForEach (coarse, [&] (std::size_t g) {
+    for (std::size_t c = 0; c < chunks; ++c)
+      coarse_begin[g + 1] += at[c * coarse + g];
+  }, 256);
+  for (std::size_t g = 0; g < coarse; ++g)
+    coarse_begin[g + 1] += coarse_begin[g];
+  parallelForEach (coarse, [&] (std::size_t g) {
+    std::size_t next = coarse_begin[g];
+    for (std::size_t c = 0; c < chunks; ++c)
+      next += std::exchange (at[c * coarse + g], next);
+  }, 256);
+
+  std::vector<T> items (coarse_begin[coarse]);
+  std::vector<std::uint16_t> fine (items.size ()); // each item's bucket within its coarse bucket
+  parallelForEach (chunks, [&] (std::size_t c) {
+    std::size_t* next = &at[c * coarse];
+    for (std::size_t i = chunk_begin (c); i < chunk_begin (c + 1); ++i)
+      each (i, [&] (std::size_t b, const T& item) {
+        const std::size_t k = next[b >> shift]++;
+        items[k] = item;
+        fine[k] = static_cast<std::uint16_t> (b & fine_mask);
+      });
+  }, 1);
+  at = {};
+
+  begin.assign (num_buckets + 1, items.size ());
+  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, coarse), [&] (const tbb::blocked_range<std::size_t>& r) {
+    std::vector<T> sorted;
+    std::vector<std::size_t> count (fine_mask + 2);
+    for (std::size_t g = r.begin (); g != r.end (); ++g)
+    {
+      const std::size_t first = coarse_begin[g], last = coarse_begin[g + 1];
+      const std::size_t low = g << shift, high = std::min (num_buckets, (g + 1) << shift);
+      std::fill (count.begin (), count.end (), 0);
+      for (std::size_t k = first; k < last; ++k)
+        ++count[fine[k] + 1];
+      for (std::size_t f = 0; f + 1 < count.size (); ++f)
+        count[f + 1] += count[f];
+      for (std::size_t b = low; b < high; ++b)
+        begin[b] = first + count[b - low];
+      sorted.resize (last - first);
+      for (std::size_t k = first; k < last; ++k)
+        sorted[count[fine[k]]++] = items[k];
+      std::copy (sorted.begin (), sorted.end (), items.begin () + first);
+      for (std::size_t b = low; b < high; ++b)
+        finish (b, items.begin () + begin[b], items.begin () + (b + 1 < high ? begin[b + 1] : last));
+    }
   });
   return items;
 }

@@ -129,10 +129,7 @@ extractTetrahedra (Cgal& rt, const Id& id, Triangulation& t)
         const std::uint32_t* v = &canonical[4 * j];
         put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
       },
-      begin);
-  parallelForEach (num_vertices, [&] (std::size_t a) {
-    std::sort (keyed.begin () + begin[a], keyed.begin () + begin[a + 1]);
-  });
+      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
   std::vector<std::uint32_t> order (n);
   parallelForEach (n, [&] (std::size_t r) { order[r] = keyed[r].tetrahedron; });
   keyed = {};

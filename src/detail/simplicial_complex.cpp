@@ -45,19 +45,18 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
       }
   };
 
-  std::vector<std::size_t> begin;
-  std::vector<Instance> instances = bucketInParallel<Instance> (num_top, num_vertices, each, begin);
-
-  // Sort each bucket and count its distinct edges; a prefix sum gives each bucket its first id.
+  // A bucket's distinct edges are counted while it is in cache; a prefix sum gives each bucket
+  // its first id.
   std::vector<SimplexId> first_id (num_vertices + 1, 0);
-  parallelForEach (num_vertices, [&] (std::size_t a) {
-    const auto first = instances.begin () + begin[a], last = instances.begin () + begin[a + 1];
-    std::sort (first, last);
-    SimplexId distinct = 0;
-    for (auto it = first; it != last; ++it)
-      distinct += it == first || it->other != (it - 1)->other;
-    first_id[a + 1] = distinct;
-  });
+  std::vector<std::size_t> begin;
+  std::vector<Instance> instances =
+      bucketInParallel<Instance> (num_top, num_vertices, each, begin, [&] (std::size_t a, auto first, auto last) {
+        std::sort (first, last);
+        SimplexId distinct = 0;
+        for (auto it = first; it != last; ++it)
+          distinct += it == first || it->other != (it - 1)->other;
+        first_id[a + 1] = distinct;
+      });
   for (std::uint32_t a = 0; a < num_vertices; ++a)
     first_id[a + 1] += first_id[a];
 
