@@ -83,38 +83,55 @@ canonicalOrder (const std::uint32_t* v)
   return p;
 }
 
-/** The finite tetrahedra of \a rt into \a t, in an order and with local vertex orders that
-  * depend only on the vertex ids \a id gives: sorted by their vertex sets, each listed by
-  * canonicalOrder. A parallel insertion leaves CGAL's cells in an order that depends on thread
-  * timing; this keeps every later stage, and so every result, the same on any number of
-  * threads. Ordering by lowest vertex along the curve of vertex ids also keeps the tetrahedra of a
-  * neighbourhood together. */
-template <class Cgal, class Id>
-void
-extractTetrahedra (Cgal& rt, const Id& id, Triangulation& t)
+/** A triangulation's finite tetrahedra as read from CGAL, in CGAL's (thread-timing dependent)
+  * order: each one's vertex ids in canonicalOrder, and across each of them the neighbour's
+  * index in this order, or NO_NEIGHBOUR. */
+struct CgalTetrahedra
 {
+  std::vector<std::uint32_t> vertices, across;
+};
+
+template <class Cgal, class Id>
+CgalTetrahedra
+readTetrahedra (Cgal& rt, const Id& id)
+{
+  // Cells are numbered first (in their infos), so that the one pass over them reads their
+  // neighbours' numbers too.
   std::vector<typename Cgal::Cell_handle> cells;
   cells.reserve (rt.tds ().number_of_cells ());
-  for (auto c = rt.finite_cells_begin (); c != rt.finite_cells_end (); ++c)
-    cells.push_back (c);
-  const std::size_t n = cells.size ();
-
-  std::vector<std::uint32_t> canonical (4 * n);
-  std::vector<std::array<std::uint8_t, 4>> local (n); // canonical slot -> CGAL's local index
-  parallelForEach (n, [&] (std::size_t j) {
+  for (auto c = rt.all_cells_begin (); c != rt.all_cells_end (); ++c)
+    if (rt.is_infinite (c))
+      c->info () = NO_NEIGHBOUR;
+    else
+    {
+      c->info () = static_cast<std::uint32_t> (cells.size ());
+      cells.push_back (c);
+    }
+  CgalTetrahedra read{std::vector<std::uint32_t> (4 * cells.size ()), std::vector<std::uint32_t> (4 * cells.size ())};
+  parallelForEach (cells.size (), [&] (std::size_t j) {
     std::uint32_t v[4];
     for (int i = 0; i < 4; ++i)
       v[i] = id (cells[j]->vertex (i));
     const std::array<int, 4> p = canonicalOrder (v);
     for (int i = 0; i < 4; ++i)
     {
-      canonical[4 * j + i] = v[p[i]];
-      local[j][i] = static_cast<std::uint8_t> (p[i]);
+      read.vertices[4 * j + i] = v[p[i]];
+      read.across[4 * j + i] = cells[j]->neighbor (p[i])->info ();
     }
   });
+  return read;
+}
 
+/** The tetrahedra \a read into \a t, in an order that depends only on the vertex ids: sorted by
+  * their vertex sets. A parallel insertion leaves CGAL's cells in an order that depends on thread
+  * timing; this keeps every later stage, and so every result, the same on any number of threads.
+  * Ordering by lowest vertex along the curve of vertex ids also keeps the tetrahedra of a
+  * neighbourhood together. */
+void
+orderTetrahedra (const CgalTetrahedra& read, Triangulation& t)
+{
+  const std::size_t n = read.vertices.size () / 4;
   // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
-  const std::size_t num_vertices = t.point_of_vertex.size ();
   // The key travels with the tetrahedron, so that sorting a bucket reads nothing else.
   struct Keyed
   {
@@ -124,26 +141,28 @@ extractTetrahedra (Cgal& rt, const Id& id, Triangulation& t)
   };
   std::vector<std::size_t> begin;
   std::vector<Keyed> keyed = bucketInParallel<Keyed> (
-      n, num_vertices,
+      n, t.point_of_vertex.size (),
       [&] (std::size_t j, auto put) {
-        const std::uint32_t* v = &canonical[4 * j];
+        const std::uint32_t* v = &read.vertices[4 * j];
         put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
       },
       begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
-  std::vector<std::uint32_t> order (n);
-  parallelForEach (n, [&] (std::size_t r) { order[r] = keyed[r].tetrahedron; });
+  std::vector<std::uint32_t> order (n), rank (n);
+  parallelForEach (n, [&] (std::size_t r) {
+    order[r] = keyed[r].tetrahedron;
+    rank[order[r]] = static_cast<std::uint32_t> (r);
+  });
   keyed = {};
 
-  parallelForEach (n, [&] (std::size_t r) { cells[order[r]]->info () = static_cast<std::uint32_t> (r); });
   t.top_simplices.resize (4 * n);
   t.neighbours.resize (4 * n);
   parallelForEach (n, [&] (std::size_t r) {
-    const std::uint32_t j = order[r];
+    const std::size_t j = order[r];
     for (int i = 0; i < 4; ++i)
     {
-      t.top_simplices[4 * r + i] = canonical[4 * std::size_t (j) + i];
-      const auto across = cells[j]->neighbor (local[j][i]);
-      t.neighbours[4 * r + i] = rt.is_infinite (across) ? NO_NEIGHBOUR : across->info ();
+      t.top_simplices[4 * r + i] = read.vertices[4 * j + i];
+      const std::uint32_t u = read.across[4 * j + i];
+      t.neighbours[4 * r + i] = u == NO_NEIGHBOUR ? NO_NEIGHBOUR : rank[u];
     }
   });
 }
@@ -214,12 +233,25 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
     v->info () = vertex_of_point[v->info ()];
   const auto id = [] (typename Cgal::Vertex_handle v) { return v->info (); };
 
+  // CGAL's triangulation is let go before the tetrahedra are ordered, which needs as much memory
+  // again. Its parallel build allocates through TBB's allocator, which keeps freed memory for
+  // reuse; that is given back too. (Only then: asked before it ever allocated, the allocator
+  // crashes.)
+  const auto release = [&rt] {
+    rt.clear ();
+    if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
+      scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+  };
   auto& top = t.top_simplices;
   switch (t.dimension)
   {
   case 3:
-    extractTetrahedra (rt, id, t);
+  {
+    const CgalTetrahedra read = readTetrahedra (rt, id);
+    release ();
+    orderTetrahedra (read, t);
     break;
+  }
   case 2:
     for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
       for (int i = 0; i < 3; ++i)
@@ -238,6 +270,7 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
   default:
     break;
   }
+  release ();
   return t;
 }
 
@@ -258,11 +291,6 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
                                         : triangulateWith<Delaunay<CGAL::Sequential_tag>> (positions, point)
                   : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted)
                              : triangulateWith<Regular<CGAL::Sequential_tag>> (positions, weighted);
-  // The parallel triangulation allocates through TBB's allocator, which keeps freed memory for
-  // reuse; give it back so that the later stages do not sit on top of it. (Only then: asked
-  // before it ever allocated, the allocator crashes.)
-  if (parallel)
-    scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
   return t;
 }
 
