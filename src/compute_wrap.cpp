@@ -11,6 +11,7 @@
 #include "detail/classification.h"
 #include "detail/input_points.h"
 #include "detail/manifold_split.h"
+#include "detail/parallel_for_each.h"
 #include "detail/power_predicates.h"
 #include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
@@ -156,13 +157,12 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   std::vector<PointIndex> input_of_vertex (triangulation.point_of_vertex.size ());
   std::vector<Point3> vertex_positions (input_of_vertex.size ());
   std::vector<double> vertex_weights (input_of_vertex.size ());
-  for (std::size_t v = 0; v < input_of_vertex.size (); ++v)
-  {
+  parallelForEach (input_of_vertex.size (), [&] (std::size_t v) {
     const std::uint32_t p = triangulation.point_of_vertex[v];
     input_of_vertex[v] = input.input_index[p];
     vertex_positions[v] = input.positions[p];
     vertex_weights[v] = input.weights[p];
-  }
+  });
   input = {};
   clock.stageDone ("triangulation");
 

@@ -19,34 +19,42 @@ selectInputPoints (const std::vector<Point3>& points, const std::vector<double>&
   const auto weight = [&] (PointIndex i) { return weights.empty () ? 0.0 : weights[i]; };
 
   InputPoints s;
-  std::vector<PointIndex> finite;
+  // Sorted with their coordinates and weights at hand, not through the indices: a comparison
+  // then reads two neighbouring entries instead of two random points.
+  struct Entry
+  {
+    Point3 position;
+    double weight;
+    PointIndex index;
+  };
+  std::vector<Entry> finite;
   finite.reserve (points.size ());
   for (PointIndex i = 0; i < points.size (); ++i)
   {
     const Point3& p = points[i];
     if (std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]) && std::isfinite (weight (i)))
-      finite.push_back (i);
+      finite.push_back ({p, weight (i), i});
     else
       s.skipped.push_back (i);
   }
 
   // Equal positions become neighbours; among them the largest weight, then the smallest index,
   // comes first and is the one kept. -0.0 == 0.0 here, as it is for the geometry.
-  tbb::parallel_sort (finite.begin (), finite.end (), [&] (PointIndex a, PointIndex b) {
-    if (points[a] != points[b])
-      return points[a] < points[b];
-    if (weight (a) != weight (b))
-      return weight (a) > weight (b);
-    return a < b;
+  tbb::parallel_sort (finite.begin (), finite.end (), [] (const Entry& a, const Entry& b) {
+    if (a.position != b.position)
+      return a.position < b.position;
+    if (a.weight != b.weight)
+      return a.weight > b.weight;
+    return a.index < b.index;
   });
   std::vector<bool> is_kept (points.size (), false);
-  PointIndex last_kept = 0;
+  std::size_t last_kept = 0;
   for (std::size_t k = 0; k < finite.size (); ++k)
   {
-    if (k > 0 && points[finite[k]] == points[last_kept])
-      s.duplicates.emplace_back (finite[k], last_kept);
+    if (k > 0 && finite[k].position == finite[last_kept].position)
+      s.duplicates.emplace_back (finite[k].index, finite[last_kept].index);
     else
-      is_kept[last_kept = finite[k]] = true;
+      is_kept[finite[last_kept = k].index] = true;
   }
   finite = {};
   std::sort (s.duplicates.begin (), s.duplicates.end ());
