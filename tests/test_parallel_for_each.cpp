@@ -59,7 +59,7 @@ expectStableBucketSort (std::size_t n, std::size_t num_buckets, std::uint32_t se
 
   std::vector<std::size_t> begin;
   std::vector<int> finished (num_buckets, 0);
-  const std::vector<std::uint64_t> items = bucketInParallel<std::uint64_t> (
+  const auto items = bucketInParallel<std::uint64_t> (
       n, num_buckets,
       [&] (std::size_t i, auto put) {
         for (const Put& p : puts[i])

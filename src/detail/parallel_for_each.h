@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "filled_in_parallel.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -71,7 +73,7 @@ struct LeaveBucket
   * a few hundred kilobytes, is then sorted by its fine buckets in cache. (One atomic counter per
   * bucket, as before, was slower: every put was a cache miss the core had to wait for.) */
 template <class T, class Each, class Finish = LeaveBucket>
-std::vector<T>
+FilledInParallel<T>
 bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std::vector<std::size_t>& begin,
                   const Finish& finish = {})
 {
@@ -103,8 +105,8 @@ bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std:
       next += std::exchange (at[c * coarse + g], next);
   }, 256);
 
-  std::vector<T> items (coarse_begin[coarse]);
-  std::vector<std::uint16_t> fine (items.size ()); // each item's bucket within its coarse bucket
+  FilledInParallel<T> items (coarse_begin[coarse]);
+  FilledInParallel<std::uint16_t> fine (items.size ()); // each item's bucket within its coarse bucket
   parallelForEach (chunks, [&] (std::size_t c) {
     std::size_t* next = &at[c * coarse];
     for (std::size_t i = chunk_begin (c); i < chunk_begin (c + 1); ++i)
@@ -118,7 +120,7 @@ bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std:
 
   begin.assign (num_buckets + 1, items.size ());
   tbb::parallel_for (tbb::blocked_range<std::size_t> (0, coarse), [&] (const tbb::blocked_range<std::size_t>& r) {
-    std::vector<T> sorted;
+    FilledInParallel<T> sorted;
     std::vector<std::size_t> count (fine_mask + 2);
     for (std::size_t g = r.begin (); g != r.end (); ++g)
     {

@@ -88,7 +88,7 @@ canonicalOrder (const std::uint32_t* v)
   * index in this order, or NO_NEIGHBOUR. */
 struct CgalTetrahedra
 {
-  std::vector<std::uint32_t> vertices, across;
+  FilledInParallel<std::uint32_t> vertices, across;
 };
 
 template <class Cgal, class Id>
@@ -107,7 +107,9 @@ readTetrahedra (Cgal& rt, const Id& id)
       c->info () = static_cast<std::uint32_t> (cells.size ());
       cells.push_back (c);
     }
-  CgalTetrahedra read{std::vector<std::uint32_t> (4 * cells.size ()), std::vector<std::uint32_t> (4 * cells.size ())};
+  CgalTetrahedra read;
+  read.vertices.resize (4 * cells.size ());
+  read.across.resize (4 * cells.size ());
   parallelForEach (cells.size (), [&] (std::size_t j) {
     std::uint32_t v[4];
     for (int i = 0; i < 4; ++i)
@@ -140,7 +142,7 @@ orderTetrahedra (const CgalTetrahedra& read, Triangulation& t)
     bool operator< (const Keyed& o) const { return key < o.key; }
   };
   std::vector<std::size_t> begin;
-  std::vector<Keyed> keyed = bucketInParallel<Keyed> (
+  auto keyed = bucketInParallel<Keyed> (
       n, t.point_of_vertex.size (),
       [&] (std::size_t j, auto put) {
         const std::uint32_t* v = &read.vertices[4 * j];

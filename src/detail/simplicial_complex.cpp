@@ -23,7 +23,7 @@ namespace
   * In parallel; the ids depend only on the set of edges. */
 void
 nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& top,
-           std::vector<std::uint32_t>& edge_vertices, std::vector<SimplexId>& top_edges,
+           std::vector<std::uint32_t>& edge_vertices, FilledInParallel<SimplexId>& top_edges,
            std::vector<std::uint32_t>& edge_tops)
 {
   const std::size_t num_top = top.size () / (d + 1), per_top = d == 3 ? 6 : 3;
@@ -49,7 +49,7 @@ nameEdges (int d, std::uint32_t num_vertices, const std::vector<std::uint32_t>& 
   // its first id.
   std::vector<SimplexId> first_id (num_vertices + 1, 0);
   std::vector<std::size_t> begin;
-  std::vector<Instance> instances =
+  const auto instances =
       bucketInParallel<Instance> (num_top, num_vertices, each, begin, [&] (std::size_t a, auto first, auto last) {
         std::sort (first, last);
         SimplexId distinct = 0;
@@ -125,7 +125,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
   {
     for (std::size_t t = 0; t < num_top; ++t)
       sort3 (top[3 * t], top[3 * t + 1], top[3 * t + 2]);
-    std::vector<SimplexId> pair_edges; // edges (0,1), (0,2), (1,2): opposite local vertex 2, 1, 0
+    FilledInParallel<SimplexId> pair_edges; // edges (0,1), (0,2), (1,2): opposite local vertex 2, 1, 0
     nameEdges (d, num_vertices, top, vertices_[1], pair_edges, cofaces_[1]);
     vertices_[2] = std::move (top);
     triangle_edges_.resize (3 * size (2));
@@ -150,7 +150,8 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
     for (std::size_t t = 0; t < num_top; ++t)
       first_triangle[t + 1] = first_triangle[t] + names (t, 0) + names (t, 1) + names (t, 2) + names (t, 3);
     vertices_[2].resize (3 * std::size_t (first_triangle[num_top]));
-    tet_triangles_.assign (4 * num_top, NO_SIMPLEX);
+    tet_triangles_.resize (4 * num_top);
+    parallelForEach (tet_triangles_.size (), [&] (std::size_t k) { tet_triangles_[k] = NO_SIMPLEX; });
     cofaces_[2].resize (vertices_[2].size () / 3);
     nameEdges (d, num_vertices, top, vertices_[1], tet_edges_, cofaces_[1]);
     std::vector<std::uint8_t> on_hull (size (1), 0); // edges of a triangle with one tetrahedron

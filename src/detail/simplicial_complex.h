@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "filled_in_parallel.h"
+
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -67,9 +69,9 @@ private:
 
   int dimension_ = -1;
   std::array<std::vector<std::uint32_t>, 4> vertices_;
-  std::vector<SimplexId> tet_triangles_;      // 4 per tetrahedron, opposite local vertex i
-  std::vector<SimplexId> tet_edges_;          // 6 per tetrahedron, see EDGE_SLOT
-  std::vector<SimplexId> triangle_edges_;     // 3 per triangle, opposite local vertex i
+  FilledInParallel<SimplexId> tet_triangles_;  // 4 per tetrahedron, opposite local vertex i
+  FilledInParallel<SimplexId> tet_edges_;      // 6 per tetrahedron, see EDGE_SLOT
+  FilledInParallel<SimplexId> triangle_edges_; // 3 per triangle, opposite local vertex i
   std::array<std::vector<std::uint32_t>, 3> cofaces_; // see cofaceCounts()
 };
 
