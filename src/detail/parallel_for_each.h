@@ -71,7 +71,7 @@ struct LeaveBucket
   * each chunk of indices counts its items per coarse bucket in a small histogram of its own;
   * prefix sums over (coarse bucket, chunk) place every chunk's items in order. Each coarse bucket,
   * a few hundred kilobytes, is then sorted by its fine buckets in cache. (One atomic counter per
-  * bucket, as before, was slower: every put was a cache miss the core had to wait for.) */
+  * bucket is slower: every put is then a cache miss the core has to wait for.) */
 template <class T, class Each, class Finish = LeaveBucket>
 FilledInParallel<T>
 bucketInParallel (std::size_t n, std::size_t num_buckets, const Each& each, std::vector<std::size_t>& begin,
