@@ -235,10 +235,10 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
     v->info () = vertex_of_point[v->info ()];
   const auto id = [] (typename Cgal::Vertex_handle v) { return v->info (); };
 
-  // CGAL's triangulation is let go before the tetrahedra are ordered, which needs as much memory
-  // again. Its parallel build allocates through TBB's allocator, which keeps freed memory for
-  // reuse; that is given back too. (Only then: asked before it ever allocated, the allocator
-  // crashes.)
+  // CGAL's triangulation is let go as soon as it has been read: ordering the tetrahedra takes
+  // a few hundred megabytes more at a million points. Its parallel build allocates through TBB's
+  // allocator, which keeps freed memory for reuse; that is given back too. (Only then: asked
+  // before it ever allocated, the allocator crashes.)
   const auto release = [&rt] {
     rt.clear ();
     if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
@@ -252,7 +252,7 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
     const CgalTetrahedra read = readTetrahedra (rt, id);
     release ();
     orderTetrahedra (read, t);
-    break;
+    return t;
   }
   case 2:
     for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
