@@ -71,7 +71,7 @@ inInputIndices (const SimplicialComplex& complex, const Classification& classifi
   {
     SimplexList& list = lists[k];
     list.vertices.reserve ((k + 1) * complex.size (k));
-    list.classes = classification.classes[k];
+    list.classes.assign (classification.classes[k].begin (), classification.classes[k].end ());
     list.in_x.resize (complex.size (k));
     for (SimplexId s = 0; s < complex.size (k); ++s)
     {
@@ -180,8 +180,9 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   const Classification& classification = *classification_kept;
   stats.perturbations = predicates.perturbations ();
   for (int k = 0; k <= 3; ++k)
-    for (SimplexClass c : classification.classes[k])
-      ++stats.simplices[k][static_cast<int> (c)];
+    for (SimplexClass c : {SimplexClass::centered, SimplexClass::confident, SimplexClass::equivocal})
+      stats.simplices[k][static_cast<int> (c)] =
+          countInParallel (complex.size (k), [&] (std::size_t s) { return classification.classes[k][s] == c; });
   clock.stageDone ("classification");
 
   Retraction x (complex, classification, std::move (coface_counts));
@@ -223,8 +224,9 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   stats.w_dangling_edges = result.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result.surface.isolated_vertices.size ();
   for (int k = 0; k <= 3; ++k)
-    for (SimplexId s = 0; s < complex.size (k); ++s)
-      stats.x_simplices[k] += x.inY ({k, s});
+    stats.x_simplices[k] = countInParallel (complex.size (k), [&] (std::size_t s) {
+      return x.inY ({k, static_cast<SimplexId> (s)});
+    });
   if (parameters.keep_complex)
   {
     result.complex = inInputIndices (complex, classification, x, input_of_vertex);

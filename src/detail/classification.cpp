@@ -16,11 +16,26 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
 {
   const int d = complex.dimension ();
   Classification c;
+  // Per face: whether a link vertex is inside its smallest orthosphere (below).
+  std::array<FilledInParallel<std::uint8_t>, 3> attached;
   for (int k = 0; k <= 3; ++k)
   {
-    c.classes[k].assign (complex.size (k), SimplexClass::centered);
-    c.lowest_successor[k].assign (complex.size (k), 0);
-    c.predecessor[k].assign (k < 3 ? complex.size (k) : 0, Simplex{-1, NO_SIMPLEX});
+    // Filled on all threads, not zeroed by one first: these are a few hundred megabytes at a
+    // million points.
+    c.classes[k].resize (complex.size (k));
+    c.lowest_successor[k].resize (complex.size (k));
+    c.predecessor[k].resize (k < 3 ? complex.size (k) : 0);
+    if (k < 3)
+      attached[k].resize (complex.size (k));
+    parallelForEach (complex.size (k), [&] (std::size_t s) {
+      c.classes[k][s] = SimplexClass::centered;
+      c.lowest_successor[k][s] = 0;
+      if (k < 3)
+      {
+        c.predecessor[k][s] = Simplex{-1, NO_SIMPLEX};
+        attached[k][s] = 0;
+      }
+    });
   }
   if (d <= 0)
     return c; // no simplex but a lone vertex: a sink
@@ -31,9 +46,6 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   // (face, link vertex) pair is asked exactly once, whatever the number of threads). For the
   // simplex it is the sign of a barycentric coordinate: lambda_i < 0 iff the answer is yes (never
   // zero: ties are perturbed). The answers wait in lowest_successor until the classes are known.
-  std::array<std::vector<std::atomic<std::uint8_t>>, 3> attached;
-  for (int k = 0; k < d; ++k)
-    attached[k] = std::vector<std::atomic<std::uint8_t>> (complex.size (k));
   // With equal weights no point is inside the smallest orthosphere of another single point
   // (that needs |p - q|^2 < 0): edges ask nothing, and their midpoint is their centre.
   const bool uniform = predicates.uniformWeights ();
@@ -42,16 +54,35 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
       const auto s = static_cast<SimplexId> (id);
       const unsigned inside = predicates.insideOppositeFacets (complex.vertices (m, s), m);
       for (unsigned rest = inside; rest != 0; rest &= rest - 1)
-        attached[m - 1][complex.facet (m, s, __builtin_ctz (rest)).id].store (1, std::memory_order_relaxed);
+        __atomic_store_n (&attached[m - 1][complex.facet (m, s, __builtin_ctz (rest)).id], std::uint8_t (1), __ATOMIC_RELAXED);
       c.lowest_successor[m][s] = static_cast<std::uint8_t> (inside);
     });
 
+  // Then each simplex learns its class from its own answers and its facets' attachment, and
+  // each confident one names itself the predecessor of its lowest successor. Claim 8 says no
+  // two name the same; should that break, the first in (dimension, id) order keeps it, as in a
+  // sequential pass, whatever the threads, and the others are counted.
+  std::atomic<std::size_t> extra{0};
+  const auto namePredecessor = [&] (Simplex mine) {
+    const Simplex v = complex.face (mine.dim, mine.id, c.lowest_successor[mine.dim][mine.id]);
+    Simplex* pred = &c.predecessor[v.dim][v.id];
+    Simplex seen;
+    __atomic_load (pred, &seen, __ATOMIC_RELAXED);
+    while (seen.id == NO_SIMPLEX || mine.dim < seen.dim || (mine.dim == seen.dim && mine.id < seen.id))
+      if (__atomic_compare_exchange (pred, &seen, &mine, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+      {
+        if (seen.id != NO_SIMPLEX)
+          extra.fetch_add (1, std::memory_order_relaxed); // displaced a later one
+        return;
+      }
+    extra.fetch_add (1, std::memory_order_relaxed); // an earlier one keeps it
+  };
   for (int k = 1; k <= d; ++k)
     parallelForEach (complex.size (k), [&] (std::size_t id) {
       const auto s = static_cast<SimplexId> (id);
       const unsigned positive = fullMask (k) & ~unsigned (c.lowest_successor[k][s]);
       c.lowest_successor[k][s] = 0;
-      if (k < d && attached[k][s].load (std::memory_order_relaxed))
+      if (k < d && attached[k][s]) // the pass that set it is over
         c.classes[k][s] = SimplexClass::equivocal;
       else if (positive == 0)
         throw std::logic_error ("classify: no positive barycentric coordinate");
@@ -59,34 +90,13 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
       {
         c.classes[k][s] = SimplexClass::confident;
         c.lowest_successor[k][s] = static_cast<std::uint8_t> (positive);
+        namePredecessor ({k, s});
       }
     });
-  for (SimplexId v = 0; v < complex.size (0); ++v)
-    if (attached[0][v].load (std::memory_order_relaxed))
+  parallelForEach (complex.size (0), [&] (std::size_t v) {
+    if (attached[0][v])
       c.classes[0][v] = SimplexClass::equivocal;
-
-  // Each confident simplex names itself the predecessor of its lowest successor. Claim 8 says no
-  // two name the same; should that break, the first in (dimension, id) order keeps it, as in a
-  // sequential pass, whatever the threads, and the others are counted.
-  std::atomic<std::size_t> extra{0};
-  for (int k = 1; k <= d; ++k)
-    parallelForEach (complex.size (k), [&] (std::size_t id) {
-      const auto s = static_cast<SimplexId> (id);
-      if (c.classes[k][s] != SimplexClass::confident)
-        return;
-      const Simplex v = complex.face (k, s, c.lowest_successor[k][s]);
-      Simplex* pred = &c.predecessor[v.dim][v.id];
-      Simplex mine{k, s}, seen;
-      __atomic_load (pred, &seen, __ATOMIC_RELAXED);
-      while (seen.id == NO_SIMPLEX || k < seen.dim || (k == seen.dim && s < seen.id))
-        if (__atomic_compare_exchange (pred, &seen, &mine, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
-        {
-          if (seen.id != NO_SIMPLEX)
-            extra.fetch_add (1, std::memory_order_relaxed); // displaced a later one
-          return;
-        }
-      extra.fetch_add (1, std::memory_order_relaxed); // an earlier one keeps it
-    });
+  });
   c.extra_predecessors = extra.load ();
   return c;
 }

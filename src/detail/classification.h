@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "filled_in_parallel.h"
 #include "simplicial_complex.h"
 
 #include <pcl_wrap/wrap_result.h>
@@ -19,15 +20,15 @@ class PowerPredicates;
   * predecessor of every equivocal one (ALGORITHM.md §3-§4). */
 struct Classification
 {
-  std::array<std::vector<SimplexClass>, 4> classes;
+  std::array<FilledInParallel<SimplexClass>, 4> classes;
   /** \brief Per confident simplex: the mask of its local vertices with lambda_i > 0, which span
     * its lowest successor LS(tau). 0 for the others. */
-  std::array<std::vector<std::uint8_t>, 4> lowest_successor;
+  std::array<FilledInParallel<std::uint8_t>, 4> lowest_successor;
   /** \brief Per equivocal simplex: the confident simplex whose lowest successor it is.
     * {-1, NO_SIMPLEX} when there is none (which would break Claim 8; the tests check it never
     * happens). For dimensions 0 to 2 only: a tetrahedron has no coface to be attached to, so it
     * is never equivocal, and predecessor[3] is empty. */
-  std::array<std::vector<Simplex>, 4> predecessor;
+  std::array<FilledInParallel<Simplex>, 4> predecessor;
   /** \brief Equivocal simplices that are the lowest successor of more than one confident
     * simplex (also a broken Claim 8; counted, not hidden). */
   std::size_t extra_predecessors = 0;

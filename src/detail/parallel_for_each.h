@@ -6,10 +6,12 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -27,6 +29,21 @@ parallelForEach (std::size_t n, const F& f, std::size_t grain = 4096)
     for (std::size_t i = r.begin (); i != r.end (); ++i)
       f (i);
   });
+}
+
+/** \brief The number of i in [0, n) for which pred(i) holds, counted on TBB's threads. */
+template <class Pred>
+std::size_t
+countInParallel (std::size_t n, const Pred& pred)
+{
+  return tbb::parallel_reduce (
+      tbb::blocked_range<std::size_t> (0, n, 4096), std::size_t (0),
+      [&] (const tbb::blocked_range<std::size_t>& r, std::size_t count) {
+        for (std::size_t i = r.begin (); i != r.end (); ++i)
+          count += pred (i) ? 1 : 0;
+        return count;
+      },
+      std::plus<> ());
 }
 
 /** \brief Writes what each i in [0, n) contributes to an output, in the order of i, on TBB's
