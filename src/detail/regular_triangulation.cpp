@@ -149,7 +149,7 @@ orderTetrahedra (const CgalTetrahedra& read, Triangulation& t)
         put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
       },
       begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
-  std::vector<std::uint32_t> order (n), rank (n);
+  FilledInParallel<std::uint32_t> order (n), rank (n);
   parallelForEach (n, [&] (std::size_t r) {
     order[r] = keyed[r].tetrahedron;
     rank[order[r]] = static_cast<std::uint32_t> (r);

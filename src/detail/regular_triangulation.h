@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "filled_in_parallel.h"
+
 #include <pcl_wrap/compute_wrap.h>
 
 #include <cstdint>
@@ -22,10 +24,10 @@ struct Triangulation
   std::vector<std::uint32_t> hidden;     ///< indices of points with an empty power cell
   /** \brief (dimension+1) vertex ids per top-dimensional simplex; tetrahedra positively
     * oriented. */
-  std::vector<std::uint32_t> top_simplices;
+  FilledInParallel<std::uint32_t> top_simplices;
   /** \brief Dimension 3 only: per tetrahedron, the tetrahedron across the facet opposite each
     * local vertex (index into the tetrahedra), or NO_NEIGHBOUR on the hull. */
-  std::vector<std::uint32_t> neighbours;
+  FilledInParallel<std::uint32_t> neighbours;
 };
 
 constexpr std::uint32_t NO_NEIGHBOUR = ~std::uint32_t (0);

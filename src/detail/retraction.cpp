@@ -18,7 +18,7 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
 {}
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
-                        std::array<std::vector<std::uint32_t>, 3> coface_counts)
+                        std::array<FilledInParallel<std::uint32_t>, 3> coface_counts)
   : complex_ (complex), classification_ (classification), counts_ (std::move (coface_counts))
 {
   // All of Del S is in Y (omega never counts), so its coface counts are the complex's; when they

@@ -27,7 +27,7 @@ public:
 
   /** \brief The same, taking over the counts of SimplicialComplex::releaseCofaceCounts(). */
   Retraction (const SimplicialComplex& complex, const Classification& classification,
-              std::array<std::vector<std::uint32_t>, 3> coface_counts);
+              std::array<FilledInParallel<std::uint32_t>, 3> coface_counts);
 
   /** \brief Y = the simplices for which \a in_y is true (a subcomplex, e.g. X(delta) of the wrap
     * filtration), with its coface counts, for boundary extraction or further collapses. */
@@ -91,7 +91,7 @@ private:
   const SimplicialComplex& complex_;
   const Classification& classification_;
   std::array<std::vector<std::uint8_t>, 4> alive_;
-  std::array<std::vector<std::uint32_t>, 3> counts_; // per k-simplex: its (k+1)-cofaces in Y
+  std::array<FilledInParallel<std::uint32_t>, 3> counts_; // per k-simplex: its (k+1)-cofaces in Y
   std::vector<Simplex> work_;
   bool seeded_ = false;
   std::array<std::vector<std::uint32_t>, 4> stamps_;

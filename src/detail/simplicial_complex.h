@@ -39,8 +39,8 @@ public:
     * vertex ids each (tetrahedra positively oriented). Every face is created once.
     * \param[in] neighbours dimension 3: per tetrahedron, the tetrahedron across the facet
     *            opposite each local vertex, or ~0 on the hull (see Triangulation) */
-  SimplicialComplex (int dimension, std::uint32_t num_vertices, std::vector<std::uint32_t> top_simplices,
-                     const std::vector<std::uint32_t>& neighbours = {});
+  SimplicialComplex (int dimension, std::uint32_t num_vertices, FilledInParallel<std::uint32_t> top_simplices,
+                     const FilledInParallel<std::uint32_t>& neighbours = {});
   SimplicialComplex () = default;
 
   int dimension () const { return dimension_; }
@@ -53,10 +53,10 @@ public:
 
   /** \brief Per simplex of dimension \a k (0 to 2): how many simplices of dimension k + 1 have it
     * as a face. */
-  const std::vector<std::uint32_t>& cofaceCounts (int k) const { return cofaces_[k]; }
+  const FilledInParallel<std::uint32_t>& cofaceCounts (int k) const { return cofaces_[k]; }
   /** \brief Hands the coface counts over (to a retraction, which would copy them otherwise);
     * cofaceCounts() is empty afterwards. */
-  std::array<std::vector<std::uint32_t>, 3> releaseCofaceCounts () { return std::exchange (cofaces_, {}); }
+  std::array<FilledInParallel<std::uint32_t>, 3> releaseCofaceCounts () { return std::exchange (cofaces_, {}); }
 
   /** \brief The face of simplex (k, s) spanned by the local vertices in \a mask (non-empty). */
   Simplex face (int k, SimplexId s, unsigned mask) const;
@@ -68,11 +68,11 @@ private:
   void countEdgesOfVertices ();
 
   int dimension_ = -1;
-  std::array<std::vector<std::uint32_t>, 4> vertices_;
+  std::array<FilledInParallel<std::uint32_t>, 4> vertices_;
   FilledInParallel<SimplexId> tet_triangles_;  // 4 per tetrahedron, opposite local vertex i
   FilledInParallel<SimplexId> tet_edges_;      // 6 per tetrahedron, see EDGE_SLOT
   FilledInParallel<SimplexId> triangle_edges_; // 3 per triangle, opposite local vertex i
-  std::array<std::vector<std::uint32_t>, 3> cofaces_; // see cofaceCounts()
+  std::array<FilledInParallel<std::uint32_t>, 3> cofaces_; // see cofaceCounts()
 };
 
 /** \brief Number of local vertices in a mask. */
