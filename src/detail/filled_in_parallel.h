@@ -2,7 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include <memory>
+#include "huge_pages.h"
+
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -11,11 +12,11 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief std::allocator, except that value-initialisation (as in vector (n) and resize (n))
+/** \brief OnHugePages, except that value-initialisation (as in vector (n) and resize (n))
   * leaves trivial types uninitialised: for arrays a parallel pass fills, which would otherwise
   * first be zeroed by one thread alone. */
 template <class T>
-struct NoZeroing : std::allocator<T>
+struct NoZeroing : OnHugePages<T>
 {
   template <class U>
   struct rebind

@@ -3,6 +3,7 @@
 #include "power_predicates.h"
 
 #include "cgal_kernel.h"
+#include "huge_pages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ namespace pcl_wrap::detail
 
 struct PowerPredicates::Points
 {
-  std::vector<WeightedPoint> points;
+  HugePageVector<WeightedPoint> points; // read at random, by vertex id
 };
 
 namespace

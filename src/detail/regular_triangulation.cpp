@@ -97,7 +97,7 @@ readTetrahedra (Cgal& rt, const Id& id)
 {
   // Cells are numbered first (in their infos), so that the one pass over them reads their
   // neighbours' numbers too.
-  std::vector<typename Cgal::Cell_handle> cells;
+  HugePageVector<typename Cgal::Cell_handle> cells;
   cells.reserve (rt.tds ().number_of_cells ());
   for (auto c = rt.all_cells_begin (); c != rt.all_cells_end (); ++c)
     if (rt.is_infinite (c))

@@ -24,15 +24,20 @@ Retraction::Retraction (const SimplicialComplex& complex, const Classification& 
   // All of Del S is in Y (omega never counts), so its coface counts are the complex's; when they
   // come empty (the complex handed its own over to another retraction), they are counted here.
   for (int k = 0; k <= 3; ++k)
-    alive_[k].assign (complex.size (k), 1);
+  {
+    alive_[k].resize (complex.size (k));
+    parallelForEach (complex.size (k), [&] (std::size_t s) { alive_[k][s] = 1; });
+  }
   if (counts_[0].size () != complex.size (0))
     countCofaces ();
 }
 
 Retraction::Retraction (const SimplicialComplex& complex, const Classification& classification,
                         const std::array<std::vector<std::uint8_t>, 4>& in_y)
-  : complex_ (complex), classification_ (classification), alive_ (in_y)
+  : complex_ (complex), classification_ (classification)
 {
+  for (int k = 0; k <= 3; ++k)
+    alive_[k].assign (in_y[k].begin (), in_y[k].end ());
   countCofaces ();
 }
 

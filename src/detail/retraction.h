@@ -3,6 +3,7 @@
 #pragma once
 
 #include "classification.h"
+#include "filled_in_parallel.h"
 #include "simplicial_complex.h"
 
 #include <array>
@@ -90,7 +91,7 @@ private:
 
   const SimplicialComplex& complex_;
   const Classification& classification_;
-  std::array<std::vector<std::uint8_t>, 4> alive_;
+  std::array<FilledInParallel<std::uint8_t>, 4> alive_;
   std::array<FilledInParallel<std::uint32_t>, 3> counts_; // per k-simplex: its (k+1)-cofaces in Y
   std::vector<Simplex> work_;
   bool seeded_ = false;
