@@ -2,14 +2,15 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """pcl_wrap against the triangulation floor and every peer, on the same points in one run.
 
-usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--timeout 900]
-                        [--all-shapes-up-to N] [--small-runs 3] [--small-up-to 20000]
+usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--large-peers LIST]
+                        [--timeout 900] [--all-shapes-up-to N] [--small-runs 3] [--small-up-to 20000]
                         [--smoke] [--out BENCHMARK.md]
 
 For each dataset (sphere, torus, cube at each size; kitten, bunny, fandisk from libcgal-demo),
 runs every method in a process of its own (bench_peers, open3d_peer.py), then mesh_quality on
-its output, and writes the Markdown report with plots. Sizes in --large run only the floor and
-pcl_wrap. Needs the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data
+its output, and writes the Markdown report with plots. Sizes in --large run the floor, pcl_wrap
+and only the peers in --large-peers (by default the two fastest at a million points; the others
+take many minutes per run there). Needs the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data
 (scripts/fetch-data.sh)."""
 import argparse
 import json
@@ -26,6 +27,7 @@ C_METHODS = ["floor_delaunay", "floor_regular", "pcl_wrap", "pcl_wrap_front", "c
              "cgal_alpha_shape", "pcl_concave_hull", "pcl_greedy_projection"]
 PY_METHODS = ["open3d_ball_pivoting", "open3d_alpha_shape"]
 FLOOR = {"floor_delaunay", "floor_regular"}
+DEFAULT_LARGE_PEERS = ["cgal_alpha_wrap", "cgal_advancing_front"]
 LABEL = {"floor_delaunay": "CGAL Delaunay_triangulation_3 (floor)",
          "floor_regular": "CGAL Regular_triangulation_3 (floor)", "pcl_wrap": "**pcl_wrap**",
          "pcl_wrap_front": "**pcl_wrap** --radius-rel 4",
@@ -77,7 +79,9 @@ def datasets(args):
             if shape == "sphere" or n <= args.all_shapes_up_to:
                 out.append((f"{shape} {n:,}", shape, n, True))
     for n in args.large:
-        out.append((f"sphere {n:,}", "sphere", n, False))
+        for shape in ("sphere", "torus", "cube"):
+            if shape == "sphere" or n <= args.all_shapes_up_to:
+                out.append((f"{shape} {n:,}", shape, n, False))
     if not args.smoke:
         for name, file, reference in (("kitten (scan)", "kitten.xyz", "points"),
                                       ("bunny (scan)", "bunny00.off", "bunny00.off"),
@@ -95,7 +99,7 @@ def run_all(args):
             # The points once, for the Python peers; the C++ ones rebuild the same from the seed.
             subprocess.run([os.path.join(BENCH, "bench_peers"), "floor_delaunay", source, str(n), "1", "--points",
                             os.path.join(work, "points.xyz")], check=True, capture_output=True)
-            methods = C_METHODS + PY_METHODS if with_peers else ["floor_delaunay", "floor_regular", "pcl_wrap", "pcl_wrap_front"]
+            methods = C_METHODS + PY_METHODS if with_peers else [m for m in C_METHODS + PY_METHODS if m in FLOOR or m.startswith("pcl_wrap") or m in args.large_peers]
             with open(os.path.join(work, "points.xyz")) as f:
                 count = sum(1 for _ in f)
             # Small inputs take milliseconds, which the machine's drift decides as much as the
@@ -138,6 +142,7 @@ def report(rows, args):
              "memory, normals included where a method needs them; peak resident memory of that process).",
              "", f"Machine: {machine}. Reproduce: `scripts/build.sh && scripts/fetch-data.sh && bench/compare.py "
              f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "")
+             + (f" --large-peers {','.join(args.large_peers)}" if args.large and args.large_peers != DEFAULT_LARGE_PEERS else "")
              + (f" --all-shapes-up-to {args.all_shapes_up_to}" if args.all_shapes_up_to < 10 ** 9 else "")
              + f" --timeout {args.timeout}" + (f" --small-runs {args.small_runs}" if args.small_runs != 1 else "")
              + (f" --small-up-to {args.small_up_to}" if args.small_runs != 1 else "") + "`.",
@@ -145,6 +150,10 @@ def report(rows, args):
                  args.small_up_to, args.small_runs),
                    "its own, and keeps its fastest run (their times are milliseconds, which the machine's drift",
                    "decides as much as the method does). Larger inputs: one run.", ""] if args.small_runs != 1 else []),
+             *([f"Inputs of {', '.join(f'{n:,}' for n in args.large)} points: the floor, pcl_wrap and only "
+                + (", ".join(LABEL[m] for m in args.large_peers) or "no peer")
+                + " (by default the two fastest peers at a million points; each of the others takes many minutes per run there).", ""]
+               if args.large else []),
              "Quality: Chamfer (mean of both directions) and Hausdorff distance between the output and the",
              "reference surface (sphere, torus: analytic; bunny, fandisk: the reference mesh; kitten: the",
              "scan's points), sampled by area, relative to the bounding box diagonal; share of input points",
@@ -243,6 +252,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--sizes", default="10000,100000,1000000")
     parser.add_argument("--large", default="")
+    parser.add_argument("--large-peers", default=",".join(DEFAULT_LARGE_PEERS),
+                        help="the peers that run on --large sizes (comma-separated method names)")
     parser.add_argument("--timeout", type=int, default=900)
     parser.add_argument("--all-shapes-up-to", type=int, default=10 ** 9,
                         help="larger sizes run on the sphere only")
@@ -254,6 +265,10 @@ def main():
     args = parser.parse_args()
     args.sizes = [500] if args.smoke else [int(s) for s in args.sizes.split(",") if s]
     args.large = [] if args.smoke else [int(s) for s in args.large.split(",") if s]
+    args.large_peers = [m for m in args.large_peers.split(",") if m]
+    unknown = [m for m in args.large_peers if m not in LABEL]
+    if unknown:
+        parser.error(f"--large-peers: unknown methods {unknown}; known: {', '.join(LABEL)}")
     if args.report_only:
         with open(os.path.join(HERE, "results.json")) as f:
             rows = json.load(f)
