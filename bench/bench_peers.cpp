@@ -3,7 +3,8 @@
 //
 // bench_peers METHOD SHAPE|FILE [N] [SEED] [--mesh OUT.obj] [--points OUT.xyz]: runs one method (see peers.h) on the
 // points, in this process alone so that its peak memory is its own, and prints one JSON line:
-// method, points, seconds (normals included), normal_seconds, peak_mib, vertices, triangles, note.
+// method, points, seconds (normals included), normal_seconds, peak_mib, vertices, triangles, note,
+// stages (pcl_wrap's stage times; empty for the others).
 // --points writes the input points first (for the Python peers). bench/compare.py runs it for
 // every method and dataset.
 #include "bench_points.h"
@@ -71,9 +72,12 @@ main (int argc, char** argv)
     for (const auto& t : out.triangles)
       obj << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
   }
+  std::string stages;
+  for (const auto& [stage, stage_seconds] : out.stages)
+    stages += (stages.empty () ? "\"" : ",\"") + stage + "\":" + std::to_string (stage_seconds);
   std::printf ("{\"method\":\"%s\",\"points\":%zu,\"seconds\":%.6f,\"normal_seconds\":%.6f,\"peak_mib\":%.1f,"
-               "\"vertices\":%zu,\"triangles\":%zu,\"note\":\"%s\"}\n",
+               "\"vertices\":%zu,\"triangles\":%zu,\"note\":\"%s\",\"stages\":{%s}}\n",
                method.c_str (), points.size (), seconds, out.normal_seconds, usage.ru_maxrss / 1024.0,
-               out.vertices.size (), out.triangles.size (), out.note.c_str ());
+               out.vertices.size (), out.triangles.size (), out.note.c_str (), stages.c_str ());
   return 0;
 }

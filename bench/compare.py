@@ -112,8 +112,9 @@ def run_all(args):
                     result = run_method(method, source, n, work, args.timeout, quality=turn == 0)
                     kept = best.setdefault(method, result)
                     if "error" not in result and "error" not in kept and result["seconds"] < kept["seconds"]:
-                        for key in ("seconds", "normal_seconds", "peak_mib"):
-                            kept[key] = result[key]
+                        for key in ("seconds", "normal_seconds", "peak_mib", "stages"):
+                            if key in result:
+                                kept[key] = result[key]
             for method in methods:
                 best[method]["dataset"] = name
                 best[method]["runs"] = turns
@@ -163,6 +164,7 @@ def report(rows, args):
     for r in rows:
         by_dataset.setdefault(r["dataset"], []).append(r)
     lines += targets(rows, by_dataset)
+    lines += stages(by_dataset)
     for name, rs in by_dataset.items():
         floor = next((r for r in rs if r["method"] == "floor_regular" and "seconds" in r), None)
         lines += [f"## {name}", "",
@@ -213,6 +215,27 @@ def targets(rows, by_dataset):
     if faster:
         lines += ["| dataset | pcl_wrap faster than every peer? |", "|---|---|"] + faster + [""]
     return lines
+
+
+def stages(by_dataset):
+    """pcl_wrap's stage times on each dataset (from the run whose total is reported)."""
+    runs = [(name, r) for name, rs in by_dataset.items() for r in rs if r["method"] == "pcl_wrap" and r.get("stages")]
+    if not runs:
+        return []
+    names = []
+    for _, r in runs:
+        names += [s for s in r["stages"] if s not in names]
+    lines = ["## pcl_wrap's stages", "",
+             "Seconds per stage (triangulation: CGAL's, read into flat arrays and ordered; complex: every "
+             "simplex named; classification: the exact predicates; collapse: the retraction; boundary: "
+             "W = Bd X and the mesh).", "",
+             "| dataset | " + " | ".join(names) + " | total | regular triangulation (floor) |",
+             "|---|" + "---|" * (len(names) + 2)]
+    for name, r in runs:
+        floor = next((f for f in by_dataset[name] if f["method"] == "floor_regular" and "seconds" in f), None)
+        lines.append(f"| {name} | " + " | ".join(fmt(r["stages"].get(s)) for s in names)
+                     + f" | {fmt(r['seconds'])} | {fmt(floor['seconds'] if floor else None)} |")
+    return lines + [""]
 
 
 def plot(rows, directory):

@@ -85,6 +85,8 @@ wrapWith (const std::vector<Point3>& points, WrapParameters parameters, const st
   out.vertices = points;
   out.triangles = r.surface.triangles;
   out.note = note;
+  for (const auto& t : r.statistics.timings)
+    out.stages.emplace_back (t.stage, t.seconds);
   return out;
 }
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::bench
@@ -22,6 +23,7 @@ struct PeerOutput
   std::vector<std::array<std::uint32_t, 3>> triangles;
   double normal_seconds = 0.0;
   std::string note; ///< the parameters used
+  std::vector<std::pair<std::string, double>> stages; ///< pcl_wrap's stage times (seconds), in order
 };
 
 using Peer = std::function<PeerOutput (const std::vector<Point3>&)>;
