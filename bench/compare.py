@@ -2,16 +2,16 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """pcl_wrap against the triangulation floor and every peer, on the same points in one run.
 
-usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--large-peers LIST]
-                        [--timeout 900] [--all-shapes-up-to N] [--small-runs 3] [--small-up-to 20000]
-                        [--smoke] [--out BENCHMARK.md]
+usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--large-shapes LIST]
+                        [--large-peers LIST] [--timeout 900] [--all-shapes-up-to N]
+                        [--small-runs 3] [--small-up-to 20000] [--smoke] [--out BENCHMARK.md]
 
 For each dataset (sphere, torus, cube at each size; kitten, bunny, fandisk from libcgal-demo),
 runs every method in a process of its own (bench_peers, open3d_peer.py), then mesh_quality on
-its output, and writes the Markdown report with plots. Sizes in --large run the floor, pcl_wrap
-and only the peers in --large-peers (by default the two fastest at a million points; the others
-take many minutes per run there). Needs the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data
-(scripts/fetch-data.sh)."""
+its output, and writes the Markdown report with plots. Sizes in --large run the shapes in
+--large-shapes (all by default) with the floor, pcl_wrap and only the peers in --large-peers (by
+default the two fastest at a million points; the others take many minutes per run there). Needs
+the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data (scripts/fetch-data.sh)."""
 import argparse
 import json
 import os
@@ -28,6 +28,7 @@ C_METHODS = ["floor_delaunay", "floor_regular", "pcl_wrap", "pcl_wrap_front", "c
 PY_METHODS = ["open3d_ball_pivoting", "open3d_alpha_shape"]
 FLOOR = {"floor_delaunay", "floor_regular"}
 DEFAULT_LARGE_PEERS = ["cgal_alpha_wrap", "cgal_advancing_front"]
+SHAPES = ["sphere", "torus", "cube"]
 LABEL = {"floor_delaunay": "CGAL Delaunay_triangulation_3 (floor)",
          "floor_regular": "CGAL Regular_triangulation_3 (floor)", "pcl_wrap": "**pcl_wrap**",
          "pcl_wrap_front": "**pcl_wrap** --radius-rel 4",
@@ -75,11 +76,11 @@ def datasets(args):
     data = os.path.join(ROOT, "data", "fetched")
     out = []
     for n in args.sizes:
-        for shape in ("sphere", "torus", "cube"):
+        for shape in SHAPES:
             if shape == "sphere" or n <= args.all_shapes_up_to:
                 out.append((f"{shape} {n:,}", shape, n, True))
     for n in args.large:
-        for shape in ("sphere", "torus", "cube"):
+        for shape in args.large_shapes:
             if shape == "sphere" or n <= args.all_shapes_up_to:
                 out.append((f"{shape} {n:,}", shape, n, False))
     if not args.smoke:
@@ -143,6 +144,7 @@ def report(rows, args):
              "memory, normals included where a method needs them; peak resident memory of that process).",
              "", f"Machine: {machine}. Reproduce: `scripts/build.sh && scripts/fetch-data.sh && bench/compare.py "
              f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "")
+             + (f" --large-shapes {','.join(args.large_shapes)}" if args.large and args.large_shapes != SHAPES else "")
              + (f" --large-peers {','.join(args.large_peers)}" if args.large and args.large_peers != DEFAULT_LARGE_PEERS else "")
              + (f" --all-shapes-up-to {args.all_shapes_up_to}" if args.all_shapes_up_to < 10 ** 9 else "")
              + f" --timeout {args.timeout}" + (f" --small-runs {args.small_runs}" if args.small_runs != 1 else "")
@@ -151,7 +153,7 @@ def report(rows, args):
                  args.small_up_to, args.small_runs),
                    "its own, and keeps its fastest run (their times are milliseconds, which the machine's drift",
                    "decides as much as the method does). Larger inputs: one run.", ""] if args.small_runs != 1 else []),
-             *([f"Inputs of {', '.join(f'{n:,}' for n in args.large)} points: the floor, pcl_wrap and only "
+             *([f"Inputs of {', '.join(f'{n:,}' for n in args.large)} points ({', '.join(args.large_shapes)}): the floor, pcl_wrap and only "
                 + (", ".join(LABEL[m] for m in args.large_peers) or "no peer")
                 + " (by default the two fastest peers at a million points; each of the others takes many minutes per run there).", ""]
                if args.large else []),
@@ -198,7 +200,7 @@ def targets(rows, by_dataset):
         lines += ["| sphere points | pcl_wrap (s) | regular triangulation (s) | time ratio (target ≤ 1.5) | memory ratio (target ≤ 2) | µs per point |",
                   "|---|---|---|---|---|---|"]
         for n in spheres:
-            rs = [r for r in rows if r["dataset"].startswith("sphere ") and r["points"] == n and ok(r)]
+            rs = [r for r in rows if ok(r) and r["dataset"].startswith("sphere ") and r["points"] == n]
             w = next(r for r in rs if r["method"] == "pcl_wrap")
             f = next((r for r in rs if r["method"] == "floor_regular"), None)
             if f:
@@ -275,6 +277,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--sizes", default="10000,100000,1000000")
     parser.add_argument("--large", default="")
+    parser.add_argument("--large-shapes", default=",".join(SHAPES),
+                        help="the synthetic shapes that run on --large sizes (comma-separated)")
     parser.add_argument("--large-peers", default=",".join(DEFAULT_LARGE_PEERS),
                         help="the peers that run on --large sizes (comma-separated method names)")
     parser.add_argument("--timeout", type=int, default=900)
@@ -288,6 +292,9 @@ def main():
     args = parser.parse_args()
     args.sizes = [500] if args.smoke else [int(s) for s in args.sizes.split(",") if s]
     args.large = [] if args.smoke else [int(s) for s in args.large.split(",") if s]
+    args.large_shapes = [shape for shape in args.large_shapes.split(",") if shape]
+    if any(shape not in SHAPES for shape in args.large_shapes):
+        parser.error(f"--large-shapes: known shapes are {', '.join(SHAPES)}")
     args.large_peers = [m for m in args.large_peers.split(",") if m]
     unknown = [m for m in args.large_peers if m not in LABEL]
     if unknown:
