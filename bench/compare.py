@@ -100,7 +100,8 @@ def run_all(args):
             # The points once, for the Python peers; the C++ ones rebuild the same from the seed.
             subprocess.run([os.path.join(BENCH, "bench_peers"), "floor_delaunay", source, str(n), "1", "--points",
                             os.path.join(work, "points.xyz")], check=True, capture_output=True)
-            methods = C_METHODS + PY_METHODS if with_peers else [m for m in C_METHODS + PY_METHODS if m in FLOOR or m.startswith("pcl_wrap") or m in args.large_peers]
+            methods = [m for m in C_METHODS + PY_METHODS
+                       if with_peers or m in FLOOR or m.startswith("pcl_wrap") or m in args.large_peers]
             with open(os.path.join(work, "points.xyz")) as f:
                 count = sum(1 for _ in f)
             # Small inputs take milliseconds, which the machine's drift decides as much as the
