@@ -75,14 +75,12 @@ DATASET_REFERENCE = {"sphere": "sphere", "torus": "torus"}
 def datasets(args):
     data = os.path.join(ROOT, "data", "fetched")
     out = []
-    for n in args.sizes:
-        for shape in SHAPES:
+    # Every peer runs on --sizes; on --large sizes only the floor, pcl_wrap and --large-peers.
+    synthetic = [(n, SHAPES, True) for n in args.sizes] + [(n, args.large_shapes, False) for n in args.large]
+    for n, shapes, with_peers in synthetic:
+        for shape in shapes:
             if shape == "sphere" or n <= args.all_shapes_up_to:
-                out.append((f"{shape} {n:,}", shape, n, True))
-    for n in args.large:
-        for shape in args.large_shapes:
-            if shape == "sphere" or n <= args.all_shapes_up_to:
-                out.append((f"{shape} {n:,}", shape, n, False))
+                out.append((f"{shape} {n:,}", shape, n, with_peers))
     if not args.smoke:
         for name, file, reference in (("kitten (scan)", "kitten.xyz", "points"),
                                       ("bunny (scan)", "bunny00.off", "bunny00.off"),
@@ -123,6 +121,11 @@ def run_all(args):
                 rows.append(best[method])
                 print(json.dumps(best[method]), flush=True)
     return rows
+
+
+def regular_floor(rs):
+    """Among one dataset's rows, the measured run of CGAL's regular triangulation, or None."""
+    return next((r for r in rs if r["method"] == "floor_regular" and "seconds" in r), None)
 
 
 def fmt(x, spec="{:.3g}"):
@@ -169,7 +172,7 @@ def report(rows, args):
     lines += targets(rows, by_dataset)
     lines += stages(by_dataset)
     for name, rs in by_dataset.items():
-        floor = next((r for r in rs if r["method"] == "floor_regular" and "seconds" in r), None)
+        floor = regular_floor(rs)
         lines += [f"## {name}", "",
                   "| method | time (s) | × floor | peak MiB | triangles | Chamfer | Hausdorff | points on output | watertight | non-manifold edges / vertices | components | genus |",
                   "|---|---|---|---|---|---|---|---|---|---|---|---|"]
@@ -203,7 +206,7 @@ def targets(rows, by_dataset):
         for n in spheres:
             rs = [r for r in rows if ok(r) and r["dataset"].startswith("sphere ") and r["points"] == n]
             w = next(r for r in rs if r["method"] == "pcl_wrap")
-            f = next((r for r in rs if r["method"] == "floor_regular"), None)
+            f = regular_floor(rs)
             if f:
                 lines.append(f"| {n:,} | {w['seconds']:.3g} | {f['seconds']:.3g} | {w['seconds'] / f['seconds']:.2f} "
                              f"| {w['peak_mib'] / f['peak_mib']:.2f} | {1e6 * w['seconds'] / n:.1f} |")
@@ -235,7 +238,7 @@ def stages(by_dataset):
              "| dataset | " + " | ".join(names) + " | total | regular triangulation (floor) |",
              "|---|" + "---|" * (len(names) + 2)]
     for name, r in runs:
-        floor = next((f for f in by_dataset[name] if f["method"] == "floor_regular" and "seconds" in f), None)
+        floor = regular_floor(by_dataset[name])
         lines.append(f"| {name} | " + " | ".join(fmt(r["stages"].get(s)) for s in names)
                      + f" | {fmt(r['seconds'])} | {fmt(floor['seconds'] if floor else None)} |")
     return lines + [""]
