@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "regular_triangulation.h"
 
+#include "address_index.h"
 #include "cgal_kernel.h"
 #include "parallel_for_each.h"
 #include "z_order.h"
@@ -10,7 +11,6 @@
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_lock_grid_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <tbb/scalable_allocator.h>
@@ -27,7 +27,7 @@ namespace pcl_wrap::detail
 namespace
 {
 
-// Vertex infos are point indices; cell infos number the finite cells, to name neighbours. Each
+// Vertex infos are point indices (cells are numbered by their addresses: AddressIndex). Each
 // triangulation comes in two builds: Parallel_tag inserts on all threads, given a lock grid;
 // Sequential_tag has lighter containers, about 10% faster on one thread.
 using LockGrid = CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>;
@@ -39,9 +39,8 @@ using LockGridOf = std::conditional_t<IS_PARALLEL<Concurrency>, LockGrid, CGAL::
 // Hidden points are found from the vertex set afterwards, so cells need not store them.
 using RegularVertex = CGAL::Triangulation_vertex_base_with_info_3<
     std::uint32_t, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
-using RegularCell = CGAL::Triangulation_cell_base_with_info_3<
-    std::uint32_t, Kernel,
-    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>>;
+using RegularCell =
+    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>;
 template <class Concurrency>
 using Regular = CGAL::Regular_triangulation_3<
     Kernel, CGAL::Triangulation_data_structure_3<RegularVertex, RegularCell, Concurrency>, LockGridOf<Concurrency>>;
@@ -51,8 +50,7 @@ using Regular = CGAL::Regular_triangulation_3<
 // ties by the same symbolic perturbation (points in lexicographic order, the largest lifted
 // most), so they give the same tetrahedra; lower dimensions keep to Regular.
 using DelaunayVertex = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using DelaunayCell = CGAL::Triangulation_cell_base_with_info_3<
-    std::uint32_t, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+using DelaunayCell = CGAL::Delaunay_triangulation_cell_base_3<Kernel>;
 template <class Concurrency>
 using Delaunay = CGAL::Delaunay_triangulation_3<
     Kernel, CGAL::Triangulation_data_structure_3<DelaunayVertex, DelaunayCell, Concurrency>, CGAL::Default,
@@ -93,20 +91,23 @@ struct CgalTetrahedra
 
 template <class Cgal, class Id>
 CgalTetrahedra
-readTetrahedra (Cgal& rt, const Id& id)
+readTetrahedra (const Cgal& rt, const Id& id)
 {
-  // Cells are numbered first (in their infos), so that the one pass over them reads their
-  // neighbours' numbers too.
+  // Cells are numbered first, by their addresses, so that the one pass over them finds their
+  // neighbours' numbers without reading the neighbours.
+  AddressIndex<sizeof (typename Cgal::Cell)> number;
   HugePageVector<typename Cgal::Cell_handle> cells;
   cells.reserve (rt.tds ().number_of_cells ());
+  number.reserve (rt.tds ().number_of_cells ());
   for (auto c = rt.all_cells_begin (); c != rt.all_cells_end (); ++c)
     if (rt.is_infinite (c))
-      c->info () = NO_NEIGHBOUR;
+      number.add (&*c, NO_NEIGHBOUR);
     else
     {
-      c->info () = static_cast<std::uint32_t> (cells.size ());
+      number.add (&*c, static_cast<std::uint32_t> (cells.size ()));
       cells.push_back (c);
     }
+  number.seal ();
   CgalTetrahedra read;
   read.vertices.resize (4 * cells.size ());
   read.across.resize (4 * cells.size ());
@@ -118,7 +119,7 @@ readTetrahedra (Cgal& rt, const Id& id)
     for (int i = 0; i < 4; ++i)
     {
       read.vertices[4 * j + i] = v[p[i]];
-      read.across[4 * j + i] = cells[j]->neighbor (p[i])->info ();
+      read.across[4 * j + i] = number[&*cells[j]->neighbor (p[i])];
     }
   });
   return read;
