@@ -19,13 +19,13 @@ namespace pcl_wrap::detail
   * Reading CGAL's cells, each cell must learn the numbers of its four neighbours. Asking the
   * neighbours themselves is a random access into the whole triangulation (600 MB at a million
   * points), which waits on memory. But a container's objects lie in a few large runs of
-  * consecutive addresses (CGAL's compact containers allocate them in blocks: 6.2M cells in a
-  * few thousand runs), so an address names its run, and its place in it, through a table small
-  * enough to stay in cache.
+  * consecutive addresses (CGAL's compact containers allocate them in blocks: the 6.2M cells of
+  * a million points in about 900 runs), so an address names its run, and its place in it,
+  * through a table small enough to stay in cache.
   *
   * Runs are the maximal sequences of objects added at consecutive addresses, so they never
-  * overlap, whatever the container's layout. Add every object that will be looked up, then
-  * seal(), then look up.
+  * overlap, whatever the container's layout. Add every object that will be looked up, each
+  * once, then seal(), then look up.
   */
 template <std::size_t STRIDE>
 class AddressIndex
@@ -87,7 +87,7 @@ private:
   struct Run
   {
     std::uintptr_t begin, end; // [begin, end), objects STRIDE bytes apart
-    std::size_t first;         // the number of the object at begin, in numbers_
+    std::size_t first;         // where the number of the object at begin is in numbers_
   };
   std::vector<Run> runs_;
   HugePageVector<std::uint32_t> numbers_; // in the order added (read at random: 2 MB pages)
