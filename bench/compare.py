@@ -159,7 +159,8 @@ def report(rows, args):
                    "decides as much as the method does). Larger inputs: one run.", ""] if args.small_runs != 1 else []),
              *([f"Inputs of {', '.join(f'{n:,}' for n in args.large)} points ({', '.join(args.large_shapes)}): the floor, pcl_wrap and only "
                 + (", ".join(LABEL[m] for m in args.large_peers) or "no peer")
-                + " (by default the two fastest peers at a million points; each of the others takes many minutes per run there).", ""]
+                + (" (by default the two fastest peers at a million points; each of the others takes many minutes per run there)"
+                   if args.large_peers == DEFAULT_LARGE_PEERS else "") + ".", ""]
                if args.large else []),
              "Quality: Chamfer (mean of both directions) and Hausdorff distance between the output and the",
              "reference surface (sphere, torus: analytic; bunny, fandisk: the reference mesh; kitten: the",
