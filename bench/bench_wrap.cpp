@@ -6,7 +6,9 @@
 // Delaunay-based method pays) and of pcl_wrap, stage by stage. Each measurement runs in a
 // child process of its own, so each peak resident set size is its own. With RUNS > 1 the three
 // take turns RUNS times and each reports its fastest run: this machine's speed drifts by 20-30%
-// over minutes, and taking turns exposes all three to the same drift.
+// over minutes, and taking turns exposes all three to the same drift. The ratio of pcl_wrap to
+// the regular triangulation within each turn is printed too: its spread says how far one
+// run's ratio can be trusted.
 #include "bench_points.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -23,6 +25,7 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <vector>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -124,11 +127,14 @@ main (int argc, char** argv)
     best.peak_kib = peak;
   };
   Measurement delaunay, regular, wrap;
+  std::vector<double> turn_ratios;
   for (int run = 0; run < runs; ++run)
   {
     keepBest (delaunay, measure (delaunayAlone));
-    keepBest (regular, measure (regularAlone));
-    keepBest (wrap, measure (wrapAll));
+    const Measurement r = measure (regularAlone), w = measure (wrapAll);
+    keepBest (regular, r);
+    keepBest (wrap, w);
+    turn_ratios.push_back (w.seconds / r.seconds);
   }
 
   std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB)\n", shape.c_str (), points.size (), seed, runs,
@@ -139,5 +145,14 @@ main (int argc, char** argv)
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
   std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
                double (wrap.peak_kib) / double (regular.peak_kib));
+  if (runs > 1)
+  {
+    std::printf ("  time ratio within each turn:");
+    for (double r : turn_ratios)
+      std::printf (" %.2fx", r);
+    std::sort (turn_ratios.begin (), turn_ratios.end ());
+    const std::size_t m = turn_ratios.size ();
+    std::printf (" (median %.2fx)\n", m % 2 ? turn_ratios[m / 2] : (turn_ratios[m / 2 - 1] + turn_ratios[m / 2]) / 2);
+  }
   return 0;
 }
