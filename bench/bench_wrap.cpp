@@ -8,7 +8,9 @@
 // take turns RUNS times and each reports its fastest run: this machine's speed drifts by 20-30%
 // over minutes, and taking turns exposes all three to the same drift. The ratio of pcl_wrap to
 // the regular triangulation within each turn is printed too: its spread says how far one
-// run's ratio can be trusted.
+// run's ratio can be trusted. CGAL's parallel Delaunay triangulation (all threads, the lock grid
+// pcl_wrap uses) is timed once more, after the turns: on equal weights pcl_wrap's triangulation
+// stage is that insertion plus reading the cells, so it is the floor of any parallel pipeline.
 #include "bench_points.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -16,6 +18,9 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Spatial_lock_grid_3.h>
+
+#include <tbb/info.h>
 
 #include <algorithm>
 #include <chrono>
@@ -110,6 +115,22 @@ main (int argc, char** argv)
     CGAL::Regular_triangulation_3<K> rt (p.begin (), p.end ());
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (rt.number_of_finite_cells ()));
   };
+  const auto delaunayParallel = [&] (Measurement& m) {
+    using Tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                                     CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>;
+    using LockGrid = CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>;
+    std::vector<K::Point_3> p;
+    p.reserve (points.size ());
+    CGAL::Bbox_3 box;
+    for (const auto& q : points)
+    {
+      p.emplace_back (q[0], q[1], q[2]);
+      box += p.back ().bbox ();
+    }
+    LockGrid locks (box, 50); // as pcl_wrap's
+    CGAL::Delaunay_triangulation_3<K, Tds, CGAL::Default, LockGrid> dt (p.begin (), p.end (), &locks);
+    std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
+  };
   const auto wrapAll = [&] (Measurement& m) {
     pcl_wrap::WrapParameters parameters;
     parameters.keep_complex = false;
@@ -136,12 +157,15 @@ main (int argc, char** argv)
     keepBest (wrap, w);
     turn_ratios.push_back (w.seconds / r.seconds);
   }
+  const Measurement parallel = measure (delaunayParallel);
+  const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
 
   std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB)\n", shape.c_str (), points.size (), seed, runs,
                runs == 1 ? "" : "s", baseline.peak_kib / 1024.0);
   std::printf ("  %-28s %9s %11s  %s\n", "", "seconds", "peak MiB", "");
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Delaunay_triangulation_3", delaunay.seconds, delaunay.peak_kib / 1024.0, delaunay.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Regular_triangulation_3", regular.seconds, regular.peak_kib / 1024.0, regular.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", parallel_name.c_str (), parallel.seconds, parallel.peak_kib / 1024.0, parallel.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
   std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
                double (wrap.peak_kib) / double (regular.peak_kib));
