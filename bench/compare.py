@@ -132,7 +132,8 @@ def fmt(x, spec="{:.3g}"):
     return "-" if x is None else spec.format(x)
 
 
-def report(rows, args):
+def this_machine():
+    """The processor, cores and memory of the machine this runs on."""
     machine = f"{platform.processor() or platform.machine()}, {os.cpu_count()} cores"
     try:
         with open("/proc/meminfo") as f:
@@ -142,6 +143,10 @@ def report(rows, args):
         machine = f"{model}; " + machine
     except OSError:
         pass
+    return machine
+
+
+def report(rows, args, machine):
     lines = ["# Benchmarks", "",
              "pcl_wrap against the triangulation floor and the peers a user would pick instead, on the same",
              "points in one run, each method in a process of its own (time from points in memory to mesh in",
@@ -304,11 +309,14 @@ def main():
     unknown = [m for m in args.large_peers if m not in LABEL]
     if unknown:
         parser.error(f"--large-peers: unknown methods {unknown}; known: {', '.join(LABEL)}")
+    # results.json keeps the machine the rows were measured on: a report rewritten elsewhere
+    # (--report-only) names that one, not its own.
     if args.report_only:
         with open(os.path.join(HERE, "results.json")) as f:
-            rows = json.load(f)
+            saved = json.load(f)
+        rows, machine = (saved, "not recorded") if isinstance(saved, list) else (saved["rows"], saved["machine"])
     else:
-        rows = run_all(args)
+        rows, machine = run_all(args), this_machine()
     if args.smoke:
         bad = [r for r in rows if "error" in r or (r["method"] not in FLOOR and "chamfer" not in r)]
         if bad:
@@ -317,9 +325,9 @@ def main():
         return
     if not args.report_only:
         with open(os.path.join(HERE, "results.json"), "w") as f:
-            json.dump(rows, f, indent=1)
+            json.dump({"machine": machine, "rows": rows}, f, indent=1)
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
-    lines = report(rows, args)
+    lines = report(rows, args, machine)
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
     profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
     if os.path.exists(profile):
