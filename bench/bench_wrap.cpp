@@ -12,6 +12,9 @@
 // pcl_wrap uses) is timed once more, after the turns: on equal weights pcl_wrap's triangulation
 // stage is that insertion plus reading and ordering the cells, so it is the floor of any
 // parallel pipeline.
+//
+// Before each measurement, as much memory as the largest peak so far (at first a guess from N)
+// is written and freed, unless the fifth argument is "cold": see warmMemory().
 #include "bench_points.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -32,6 +35,7 @@
 #include <iostream>
 #include <string>
 #include <vector>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -49,10 +53,33 @@ struct Measurement
   char detail[512] = "";
 };
 
-/** Runs \a work in a child process; returns its wall time and peak resident set size. */
-Measurement
-measure (const std::function<void (Measurement&)>& work)
+/** Writes to every page of \a bytes of fresh memory, then frees it.
+  *
+  * This project's VMs report freed memory to their host (Linux's free page reporting, about two
+  * seconds after it is freed), and the first touch of a reported page waits for the host: 0.5-2
+  * s per GB, against under 0.1 s for a page freed just before. Unwarmed, a measurement pays that
+  * for whatever part of its memory the process before it did not just free, so its time
+  * depended on what ran before it. Warmed, each starts from recently freed pages, as on a
+  * machine without such reporting. */
+void
+warmMemory (std::size_t bytes)
 {
+  void* p = ::mmap (nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED)
+    return;
+  ::madvise (p, bytes, MADV_HUGEPAGE); // as pcl_wrap's arrays
+  for (std::size_t i = 0; i < bytes; i += 4096)
+    static_cast<volatile char*> (p)[i] = 1;
+  ::munmap (p, bytes);
+}
+
+/** Runs \a work in a child process, after warming \a warm bytes of memory; returns its wall
+  * time and peak resident set size. */
+Measurement
+measure (const std::function<void (Measurement&)>& work, std::size_t warm = 0)
+{
+  if (warm > 0)
+    warmMemory (warm);
   int channel[2];
   if (::pipe (channel) != 0)
     throw std::runtime_error ("pipe failed");
@@ -86,15 +113,16 @@ measure (const std::function<void (Measurement&)>& work)
 int
 main (int argc, char** argv)
 {
-  if (argc < 3)
+  if (argc < 3 || argc > 6 || (argc == 6 && std::strcmp (argv[5], "cold") != 0))
   {
-    std::cerr << "usage: bench_wrap sphere|cube|torus|FILE N [SEED [RUNS]]\n";
+    std::cerr << "usage: bench_wrap sphere|cube|torus|FILE N [SEED [RUNS [cold]]]\n";
     return 2;
   }
   const std::string shape = argv[1];
   const std::size_t n = std::stoul (argv[2]);
   const unsigned seed = argc > 3 ? unsigned (std::stoul (argv[3])) : 1u;
   const int runs = argc > 4 ? std::max (1, std::stoi (argv[4])) : 1;
+  const bool cold = argc == 6;
   const std::vector<Point3> points = pcl_wrap::bench::makePoints (shape, n, seed);
   // What the process holds before any measurement (the points, the program): subtracted from
   // nothing, shown so the peaks can be read against it.
@@ -148,21 +176,32 @@ main (int argc, char** argv)
       best = m;
     best.peak_kib = peak;
   };
+  // Warm as much as the largest peak so far (at first about pcl_wrap's at 1M points, scaled),
+  // at most half the memory available now.
+  const std::size_t available = std::size_t (::sysconf (_SC_AVPHYS_PAGES)) * std::size_t (::sysconf (_SC_PAGESIZE));
+  std::size_t warm = cold ? 0 : std::min (points.size () * 1200, available / 2);
+  const auto measured = [&] (const std::function<void (Measurement&)>& work) {
+    const Measurement m = measure (work, warm);
+    if (!cold)
+      warm = std::min (std::max (warm, std::size_t (m.peak_kib) * 1024), available / 2);
+    return m;
+  };
   Measurement delaunay, regular, wrap;
   std::vector<double> turn_ratios;
   for (int run = 0; run < runs; ++run)
   {
-    keepBest (delaunay, measure (delaunayAlone));
-    const Measurement r = measure (regularAlone), w = measure (wrapAll);
+    keepBest (delaunay, measured (delaunayAlone));
+    const Measurement r = measured (regularAlone), w = measured (wrapAll);
     keepBest (regular, r);
     keepBest (wrap, w);
     turn_ratios.push_back (w.seconds / r.seconds);
   }
-  const Measurement parallel = measure (delaunayParallel);
+  const Measurement parallel = measured (delaunayParallel);
   const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
 
-  std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB)\n", shape.c_str (), points.size (), seed, runs,
-               runs == 1 ? "" : "s", baseline.peak_kib / 1024.0);
+  std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB; %s)\n", shape.c_str (), points.size (), seed,
+               runs, runs == 1 ? "" : "s", baseline.peak_kib / 1024.0,
+               cold ? "cold: no memory warmed" : ("memory warmed before each, up to " + std::to_string (warm >> 20) + " MiB").c_str ());
   std::printf ("  %-28s %9s %11s  %s\n", "", "seconds", "peak MiB", "");
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Delaunay_triangulation_3", delaunay.seconds, delaunay.peak_kib / 1024.0, delaunay.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", parallel_name.c_str (), parallel.seconds, parallel.peak_kib / 1024.0, parallel.detail);

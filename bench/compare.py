@@ -4,7 +4,7 @@
 
 usage: bench/compare.py [--sizes 10000,100000,1000000] [--large 5000000] [--large-shapes LIST]
                         [--large-peers LIST] [--timeout 900] [--all-shapes-up-to N]
-                        [--small-runs 3] [--small-up-to 20000] [--smoke] [--out BENCHMARK.md]
+                        [--small-runs 3] [--small-up-to 20000] [--warm-memory] [--smoke] [--out BENCHMARK.md]
 
 For each dataset (sphere, torus, cube at each size; kitten, bunny, fandisk from libcgal-demo),
 runs every method in a process of its own (bench_peers, open3d_peer.py), then mesh_quality on
@@ -14,6 +14,7 @@ default the two fastest at a million points; the others take many minutes per ru
 the build's bench/ (PCL_WRAP_BENCH_DIR, default build/bench) and the data (scripts/fetch-data.sh)."""
 import argparse
 import json
+import mmap
 import os
 import platform
 import subprocess
@@ -36,6 +37,27 @@ LABEL = {"floor_delaunay": "CGAL Delaunay_triangulation_3 (floor)",
          "cgal_alpha_shape": "CGAL Alpha_shape_3 (optimal alpha)", "pcl_concave_hull": "PCL ConcaveHull",
          "pcl_greedy_projection": "PCL GreedyProjection", "open3d_ball_pivoting": "Open3D ball pivoting",
          "open3d_alpha_shape": "Open3D alpha shape"}
+
+
+def warm_memory(size):
+    """Writes to every page of size bytes of fresh memory, then frees it. This VM reports freed
+    memory to its host, and the first touch of a reported page waits for the host (0.5-2 s per
+    GB); warmed, a method's run starts from recently freed pages whatever ran before it, as on a
+    machine without such reporting (see warmMemory() in bench_wrap.cpp)."""
+    try:
+        m = mmap.mmap(-1, size)
+    except (OSError, ValueError):
+        return
+    if hasattr(m, "madvise") and hasattr(mmap, "MADV_HUGEPAGE"):
+        m.madvise(mmap.MADV_HUGEPAGE)
+    for i in range(0, size, 4096):
+        m[i] = 1
+    m.close()
+
+
+def available_memory():
+    with open("/proc/meminfo") as f:
+        return next(int(l.split()[1]) * 1024 for l in f if l.startswith("MemAvailable"))
 
 
 def run_method(method, source, n, work, timeout, quality=True):
@@ -106,10 +128,19 @@ def run_all(args):
             # method does: there every method runs in turns, each time in a fresh process, and
             # keeps its fastest run (quality is measured on the first).
             turns = args.small_runs if count <= args.small_up_to else 1
+            # With --warm-memory each run is preceded by warming as much memory as the largest
+            # peak so far on this dataset (at first about pcl_wrap's, scaled from a million
+            # points), at most half the memory available.
+            cap = available_memory() // 2
+            warm = min(count * 1200, cap)
             best = {}
             for turn in range(turns):
                 for method in methods:
+                    if args.warm_memory:
+                        warm_memory(warm)
                     result = run_method(method, source, n, work, args.timeout, quality=turn == 0)
+                    if "peak_mib" in result:
+                        warm = min(max(warm, int(result["peak_mib"] * 2 ** 20)), cap)
                     kept = best.setdefault(method, result)
                     if "error" not in result and "error" not in kept and result["seconds"] < kept["seconds"]:
                         for key in ("seconds", "normal_seconds", "peak_mib", "stages"):
@@ -157,7 +188,11 @@ def report(rows, args, machine):
              + (f" --large-peers {','.join(args.large_peers)}" if args.large and args.large_peers != DEFAULT_LARGE_PEERS else "")
              + (f" --all-shapes-up-to {args.all_shapes_up_to}" if args.all_shapes_up_to < 10 ** 9 else "")
              + f" --timeout {args.timeout}" + (f" --small-runs {args.small_runs}" if args.small_runs != 1 else "")
-             + (f" --small-up-to {args.small_up_to}" if args.small_runs != 1 else "") + "`.",
+             + (f" --small-up-to {args.small_up_to}" if args.small_runs != 1 else "") + (" --warm-memory" if args.warm_memory else "") + "`.",
+             "", "Before each run as much memory as the largest peak so far on the dataset was written and freed, so that no"
+             " run waited on the VM's host for pages the process before it did not just free (`--warm-memory`)."
+             if args.warm_memory else "Memory was not warmed before each run (see `--warm-memory`): a run's time includes"
+             " the VM's host page faults for memory the process before it did not just free.",
              "", *(["Inputs of at most {:,} points: every method runs {} times in turns, each time in a process of".format(
                  args.small_up_to, args.small_runs),
                    "its own, and keeps its fastest run (their times are milliseconds, which the machine's drift",
@@ -299,6 +334,8 @@ def main():
     parser.add_argument("--report-only", action="store_true", help="rewrite the report from bench/results.json")
     parser.add_argument("--small-runs", type=int, default=3, help="runs per method on small inputs, the fastest kept")
     parser.add_argument("--small-up-to", type=int, default=20000, help="the largest input that counts as small")
+    parser.add_argument("--warm-memory", action="store_true",
+                        help="before each run, write and free as much memory as the largest peak so far (see warm_memory)")
     args = parser.parse_args()
     args.sizes = [500] if args.smoke else [int(s) for s in args.sizes.split(",") if s]
     args.large = [] if args.smoke else [int(s) for s in args.large.split(",") if s]
@@ -315,6 +352,7 @@ def main():
         with open(os.path.join(HERE, "results.json")) as f:
             saved = json.load(f)
         rows, machine = (saved, "not recorded") if isinstance(saved, list) else (saved["rows"], saved["machine"])
+        args.warm_memory = not isinstance(saved, list) and saved.get("warm_memory", False)
     else:
         rows, machine = run_all(args), this_machine()
     if args.smoke:
@@ -325,7 +363,7 @@ def main():
         return
     if not args.report_only:
         with open(os.path.join(HERE, "results.json"), "w") as f:
-            json.dump({"machine": machine, "rows": rows}, f, indent=1)
+            json.dump({"machine": machine, "warm_memory": args.warm_memory, "rows": rows}, f, indent=1)
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args, machine)
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
