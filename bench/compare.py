@@ -43,16 +43,20 @@ def warm_memory(size):
     """Writes to every page of size bytes of fresh memory, then frees it. This VM reports freed
     memory to its host, and the first touch of a reported page waits for the host (0.5-2 s per
     GB); warmed, a method's run starts from recently freed pages whatever ran before it, as on a
-    machine without such reporting (see warmMemory() in bench_wrap.cpp)."""
+    machine without such reporting (see warmMemory() in bench_wrap.cpp). In a child process:
+    the methods' processes inherit this one's peak resident size, and would report it as theirs."""
+    child = os.fork()
+    if child:
+        os.waitpid(child, 0)
+        return
     try:
         m = mmap.mmap(-1, size)
-    except (OSError, ValueError):
-        return
-    if hasattr(m, "madvise") and hasattr(mmap, "MADV_HUGEPAGE"):
-        m.madvise(mmap.MADV_HUGEPAGE)
-    for i in range(0, size, 4096):
-        m[i] = 1
-    m.close()
+        if hasattr(m, "madvise") and hasattr(mmap, "MADV_HUGEPAGE"):
+            m.madvise(mmap.MADV_HUGEPAGE)
+        for i in range(0, size, 4096):
+            m[i] = 1
+    finally:
+        os._exit(0)
 
 
 def available_memory():
