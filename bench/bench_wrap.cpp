@@ -128,11 +128,15 @@ main (int argc, char** argv)
   // nothing, shown so the peaks can be read against it.
   const Measurement baseline = measure ([] (Measurement&) {});
 
-  const auto delaunayAlone = [&] (Measurement& m) {
+  const auto cgalPoints = [&] {
     std::vector<K::Point_3> p;
     p.reserve (points.size ());
     for (const auto& q : points)
       p.emplace_back (q[0], q[1], q[2]);
+    return p;
+  };
+  const auto delaunayAlone = [&] (Measurement& m) {
+    const std::vector<K::Point_3> p = cgalPoints ();
     CGAL::Delaunay_triangulation_3<K> dt (p.begin (), p.end ());
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
   };
@@ -148,15 +152,8 @@ main (int argc, char** argv)
     using Tds = CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
                                                      CGAL::Delaunay_triangulation_cell_base_3<K>, CGAL::Parallel_tag>;
     using LockGrid = CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>;
-    std::vector<K::Point_3> p;
-    p.reserve (points.size ());
-    CGAL::Bbox_3 box;
-    for (const auto& q : points)
-    {
-      p.emplace_back (q[0], q[1], q[2]);
-      box += p.back ().bbox ();
-    }
-    LockGrid locks (box, 50); // as pcl_wrap's
+    const std::vector<K::Point_3> p = cgalPoints ();
+    LockGrid locks (CGAL::bbox_3 (p.begin (), p.end ()), 50); // as pcl_wrap's
     CGAL::Delaunay_triangulation_3<K, Tds, CGAL::Default, LockGrid> dt (p.begin (), p.end (), &locks);
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
   };
