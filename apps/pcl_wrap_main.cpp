@@ -45,8 +45,11 @@ printUsage (std::ostream& out)
          "  --region sphere:x,y,z,r | box:x0,y0,z0,x1,y1,z1\n"
          "                        local modification: front deletion with the threshold above starts\n"
          "                        only from the surface inside this region\n"
-         "  --manifold            split W where it touches itself, so that the output is a closed\n"
-         "                        2-manifold: copies of the split points follow the input points\n"
+         "  --raw                 write the paper's W = Bd X as it is (pinch edges and vertices,\n"
+         "                        sheets) instead of the default clean surface, a closed oriented\n"
+         "                        2-manifold through the points\n"
+         "  --manifold            with --raw: split W where it touches itself, so that the output\n"
+         "                        is a closed 2-manifold: copies of the split points follow the input\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
          "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
          "  --weight-scale S      multiply every weight by S (default "
@@ -153,6 +156,8 @@ parseOptions (int argc, char** argv)
       if (!parseRegion (value (), o.parameters.region))
         usageError ("--region takes sphere:x,y,z,r (r >= 0) or box:x0,y0,z0,x1,y1,z1 (lowest corner first)");
     }
+    else if (arg == "--raw")
+      o.parameters.output = Output::raw;
     else if (arg == "--manifold")
       o.parameters.manifold = true;
     else if (arg == "--weight-field")

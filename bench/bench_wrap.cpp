@@ -157,9 +157,10 @@ main (int argc, char** argv)
     CGAL::Delaunay_triangulation_3<K, Tds, CGAL::Default, LockGrid> dt (p.begin (), p.end (), &locks);
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
   };
-  const auto wrapAll = [&] (Measurement& m) {
+  const auto wrapAll = [&] (Measurement& m, pcl_wrap::Output output) {
     pcl_wrap::WrapParameters parameters;
     parameters.keep_complex = false;
+    parameters.output = output;
     const pcl_wrap::WrapResult r = pcl_wrap::computeWrap (points, parameters);
     std::string stages;
     for (const auto& t : r.statistics.timings)
@@ -183,15 +184,19 @@ main (int argc, char** argv)
       warm = std::min (std::max (warm, std::size_t (m.peak_kib) * 1024), available / 2);
     return m;
   };
-  Measurement delaunay, regular, wrap;
-  std::vector<double> turn_ratios;
+  const auto surface = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::surface); };
+  const auto raw = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw); };
+  Measurement delaunay, regular, wrap, wrap_raw;
+  std::vector<double> turn_ratios, raw_ratios;
   for (int run = 0; run < runs; ++run)
   {
     keepBest (delaunay, measured (delaunayAlone));
-    const Measurement r = measured (regularAlone), w = measured (wrapAll);
+    const Measurement r = measured (regularAlone), w = measured (surface), wr = measured (raw);
     keepBest (regular, r);
     keepBest (wrap, w);
+    keepBest (wrap_raw, wr);
     turn_ratios.push_back (w.seconds / r.seconds);
+    raw_ratios.push_back (w.seconds / wr.seconds);
   }
   const Measurement parallel = measured (delaunayParallel);
   const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
@@ -204,8 +209,14 @@ main (int argc, char** argv)
   std::printf ("  %-28s %9.3f %11.1f  %s\n", parallel_name.c_str (), parallel.seconds, parallel.peak_kib / 1024.0, parallel.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Regular_triangulation_3", regular.seconds, regular.peak_kib / 1024.0, regular.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw W (--raw)", wrap_raw.seconds, wrap_raw.peak_kib / 1024.0,
+               wrap_raw.detail);
   std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
                double (wrap.peak_kib) / double (regular.peak_kib));
+  std::printf ("  surface against raw W: time %.2fx (per turn:", wrap.seconds / wrap_raw.seconds);
+  for (double r : raw_ratios)
+    std::printf (" %.2fx", r);
+  std::printf ("), peak memory %.2fx\n", double (wrap.peak_kib) / double (wrap_raw.peak_kib));
   if (runs > 1)
   {
     std::printf ("  time ratio within each turn:");

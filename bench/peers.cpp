@@ -96,6 +96,15 @@ wrap (const std::vector<Point3>& points)
   return wrapWith (points, WrapParameters (), "no parameters");
 }
 
+/** pcl_wrap's raw output: the paper's W = Bd X, with no parameters. */
+PeerOutput
+wrapRaw (const std::vector<Point3>& points)
+{
+  WrapParameters parameters;
+  parameters.output = Output::raw;
+  return wrapWith (points, parameters, "raw W");
+}
+
 /** pcl_wrap wrapping tighter: front deletion of the sinks wider than 4 x the spacing. */
 PeerOutput
 wrapFront (const std::vector<Point3>& points)
@@ -267,7 +276,8 @@ peers ()
 {
   static const std::vector<std::pair<std::string, Peer>> all = {
       {"floor_delaunay", floorDelaunay},       {"floor_regular", floorRegular},
-      {"pcl_wrap", wrap},                      {"pcl_wrap_front", wrapFront},
+      {"pcl_wrap", wrap},                      {"pcl_wrap_raw", wrapRaw},
+      {"pcl_wrap_front", wrapFront},
       {"cgal_advancing_front", advancingFront},
       {"cgal_alpha_wrap", alphaWrap},          {"cgal_alpha_shape", alphaShape},
       {"pcl_concave_hull", concaveHull},       {"pcl_greedy_projection", greedyProjection}};

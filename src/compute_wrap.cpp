@@ -16,6 +16,8 @@
 #include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
 #include "detail/simplicial_complex.h"
+#include "detail/solid_labelling.h"
+#include "detail/solid_repair.h"
 #include "detail/sink_deletion.h"
 #include "detail/stage_clock.h"
 #include "detail/wrap_filtration.h"
@@ -172,6 +174,11 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   auto coface_counts = built.releaseCofaceCounts (); // the retraction's, not copied
   const auto complex_kept = std::make_shared<const SimplicialComplex> (std::move (built));
   const SimplicialComplex& complex = *complex_kept;
+  // The surface stage walks from tetrahedron to tetrahedron.
+  const bool clean_surface = parameters.output == Output::surface && complex.dimension () == 3;
+  FilledInParallel<std::uint32_t> neighbours;
+  if (clean_surface)
+    neighbours = std::move (triangulation.neighbours);
   triangulation = {};
   clock.stageDone ("complex");
 
@@ -204,10 +211,22 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
     clock.stageDone ("deletion");
   }
 
-  Boundary w = extractBoundary (complex, x);
-  if (parameters.manifold)
+  std::unique_ptr<Retraction> solid;
+  if (clean_surface)
   {
-    ManifoldSplit split = splitPinches (complex, x, w);
+    SolidLabels labels = labelSolid (complex, neighbours, vertex_positions, vertex_weights, x);
+    clock.stageDone ("labelling");
+    if (!labels.hull)
+      stats.tetrahedra_moved = repairSolid (complex, neighbours, x, labels).flipped;
+    neighbours = {};
+    solid = std::make_unique<Retraction> (complex, classification, solidSubcomplex (complex, labels.inside));
+    clock.stageDone ("repair");
+  }
+  const Retraction& shape = solid ? *solid : x;
+  Boundary w = extractBoundary (complex, shape);
+  if (parameters.manifold || solid)
+  {
+    ManifoldSplit split = splitPinches (complex, shape, w);
     w.triangles = std::move (split.triangles);
     // Copies follow the input points: vertex id numVertices() + k -> point points.size () + k.
     for (std::size_t k = 0; k < split.copy_of.size (); ++k)

@@ -305,7 +305,7 @@ TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
   for (const std::string format : {".ply", ".obj", ".vtk"})
   {
     SCOPED_TRACE (format);
-    const CliRun run = runCli (DIR + "torus200.xyz " + DIR + "manifold" + format + " --manifold --stats-json " + DIR +
+    const CliRun run = runCli (DIR + "torus200.xyz " + DIR + "manifold" + format + " --raw --manifold --stats-json " + DIR +
                                "manifold.json");
     ASSERT_EQ (run.status, 0) << run.err;
     pcl::PolygonMesh mesh;

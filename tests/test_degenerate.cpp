@@ -73,7 +73,7 @@ TEST (Degenerate, WeightedTiesAgreeWithCgalAndKeepTheInvariants)
     expectPerturbedEmptySpheres (p);
     EXPECT_GT (p.predicates->perturbations (), 0u);
     expectFlowInvariants (p);
-    expectWrapInvariants (computeWrap (grid, weights));
+    expectWrapInvariants (computeWrap (grid, weights, rawOutput ()));
   }
 }
 
@@ -85,7 +85,7 @@ TEST (Degenerate, EveryFamilyKeepsTheInvariants)
     const Pipeline pipeline (points);
     expectFlowInvariants (pipeline);
     expectCofaceCounts (pipeline);
-    const WrapResult r = computeWrap (points);
+    const WrapResult r = computeWrap (points, rawOutput ());
     expectWrapInvariants (r);
     const std::size_t expected_dimension = name == "one point" ? 0 : name == "two points" || name == "collinear" ? 1
                                          : name == "three points" || name == "planar grid" ? 2 : 3;
@@ -135,12 +135,12 @@ TEST (Degenerate, OutputDoesNotDependOnTheOrderOfThePoints)
   for (const auto& [name, points] : families)
   {
     SCOPED_TRACE (name);
-    const Geometry reference = geometryOf (points, computeWrap (points));
+    const Geometry reference = geometryOf (points, computeWrap (points, rawOutput ()));
     for (unsigned seed = 1; seed <= 3; ++seed)
     {
       auto shuffled = points;
       std::shuffle (shuffled.begin (), shuffled.end (), std::mt19937 (seed));
-      EXPECT_TRUE (geometryOf (shuffled, computeWrap (shuffled)) == reference) << "shuffle " << seed;
+      EXPECT_TRUE (geometryOf (shuffled, computeWrap (shuffled, rawOutput ())) == reference) << "shuffle " << seed;
     }
   }
 }
@@ -155,7 +155,7 @@ TEST (Degenerate, OutputDoesNotChangeFromRunToRunOrWithThreads)
       p.push_back ({13.5 + 13 * q[0], 13.5 + 13 * q[1], 13.5 + 13 * q[2]});
     return p;
   }();
-  WrapParameters parameters;
+  WrapParameters parameters = rawOutput ();
   const WrapResult reference = computeWrap (points, parameters);
   EXPECT_GT (reference.statistics.perturbations, 0u);
   for (unsigned threads : {1u, 2u, 0u, 1u})
@@ -188,7 +188,7 @@ TEST (Degenerate, HostileCoordinatesNeverCrash)
       points.push_back ({scale * p[0], scale * p[1], scale * p[2]});
   for (const auto& p : gridSample (3, 3, 3))
     points.push_back ({std::numeric_limits<double>::max () * (p[0] - 1) / 2, p[1], p[2]});
-  const WrapResult r = computeWrap (points);
+  const WrapResult r = computeWrap (points, rawOutput ());
   EXPECT_EQ (r.statistics.points_skipped, 4u);
   EXPECT_EQ (r.statistics.triangulation_dimension, 3);
   expectWrapInvariants (r);

@@ -8,6 +8,7 @@
 #include "support/pipeline.h"
 #include "support/samplers.h"
 #include "support/topology.h"
+#include "support/wrap_checks.h"
 
 #include "detail/wrap_filtration.h"
 
@@ -197,7 +198,7 @@ TEST (WrapFiltration, PublicSurfacesEqualGlobalDeletionFromScratch)
 {
   for (const auto& points : {torusSample (1000, 2), doubleTorusSample (1200, 3), cubeSample (500, 4)})
   {
-    WrapParameters parameters;
+    WrapParameters parameters = rawOutput ();
     parameters.filtration = true;
     const WrapResult r = computeWrap (points, parameters);
     ASSERT_FALSE (r.filtration.empty ());
@@ -213,7 +214,7 @@ TEST (WrapFiltration, PublicSurfacesEqualGlobalDeletionFromScratch)
     for (double delta : deltas)
     {
       SCOPED_TRACE ("delta " + std::to_string (delta));
-      WrapParameters global;
+      WrapParameters global = rawOutput ();
       global.deletion = SinkDeletion::global;
       global.delta = delta;
       EXPECT_EQ (canonical (r.filtration.surface (delta)), canonical (computeWrap (points, global).surface));
@@ -233,7 +234,7 @@ TEST (WrapFiltration, PublicSurfacesEqualGlobalDeletionFromScratch)
         EXPECT_EQ (bool (r.complex[k].in_x[s]), r.complex[k].values[s] < std::numeric_limits<double>::infinity ());
     }
   }
-  WrapParameters none;
+  WrapParameters none = rawOutput ();
   EXPECT_TRUE (computeWrap (torusSample (100, 1), none).filtration.empty ());
   EXPECT_THROW (Filtration ().surface (1.0), std::logic_error);
 }

@@ -214,9 +214,9 @@ TEST (FrontDeletion, ARegionOpensOnlyTheTunnelItHolds)
       EXPECT_EQ (describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()}).components, 1u);
       // Sinks outside the region stay, principal or behind larger ones: no count to check.
     };
-    const WrapResult basic = computeWrap (points);
+    const WrapResult basic = computeWrap (points, rawOutput ());
 
-    WrapParameters parameters;
+    WrapParameters parameters = rawOutput ();
     parameters.delta = 0.2; // between the tubes' sinks (< 0.4^2) and the holes' (about 0.6^2)
     const WrapResult both = computeWrap (points, parameters);
     const SurfaceReport s = describeSurface ({both.surface.triangles.begin (), both.surface.triangles.end ()});
@@ -250,7 +250,7 @@ TEST (FrontDeletion, ARegionOpensOnlyTheTunnelItHolds)
 TEST (FrontDeletion, RegionParametersAreChecked)
 {
   const auto points = doubleTorusSample (800, 1);
-  WrapParameters parameters;
+  WrapParameters parameters = rawOutput ();
   parameters.region = Region::sphere (0, 0, 0, 1);
   EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "no threshold";
   parameters.delta = 0.2;
@@ -266,7 +266,7 @@ TEST (FrontDeletion, RegionParametersAreChecked)
   parameters.region = Region::sphere (10, 10, 10, 1);
   const WrapResult r = computeWrap (points, parameters);
   EXPECT_EQ (r.statistics.sinks_deleted, 0u);
-  EXPECT_EQ (r.surface.triangles.size (), computeWrap (points).surface.triangles.size ());
+  EXPECT_EQ (r.surface.triangles.size (), computeWrap (points, rawOutput ()).surface.triangles.size ());
 }
 
 } // namespace

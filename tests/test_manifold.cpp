@@ -36,7 +36,7 @@ original (const WrapResult& r, std::size_t n, std::array<PointIndex, 3> t)
 /** The split of \a points is a closed oriented 2-manifold made of W's triangles (a sheet triangle
   * once per side), and splits exactly where W is not a manifold. */
 void
-expectManifoldSplitOf (const std::vector<Point3>& points, const WrapParameters& base = {})
+expectManifoldSplitOf (const std::vector<Point3>& points, const WrapParameters& base = rawOutput ())
 {
   WrapParameters parameters = base;
   const WrapResult w = computeWrap (points, parameters);
@@ -93,7 +93,7 @@ TEST (Manifold, SealedToriSplitIntoClosedManifolds)
   {
     SCOPED_TRACE ("seed " + std::to_string (seed));
     expectManifoldSplitOf (torusSample (200, seed));
-    WrapParameters manifold;
+    WrapParameters manifold = rawOutput ();
     manifold.manifold = true;
     split += computeWrap (torusSample (200, seed), manifold).statistics.pinch_edges_split;
   }
@@ -120,7 +120,7 @@ TEST (Manifold, DegenerateFamilies)
 
 TEST (Manifold, AfterSinkDeletion)
 {
-  WrapParameters deletion;
+  WrapParameters deletion = rawOutput ();
   deletion.radius_rel = 3;
   for (unsigned seed = 1; seed <= 3; ++seed)
   {

@@ -181,6 +181,7 @@ TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
   Wrap<pcl::PointXYZRGB> wrap;
   wrap.setInputCloud (cloud);
   wrap.setIndices (indices);
+  wrap.setOutput (Output::raw);
   wrap.setManifold (true);
   pcl::PolygonMesh mesh;
   wrap.reconstruct (mesh);
@@ -246,6 +247,7 @@ TEST (PclWrap, FiltrationSurfacesIndexTheCloud)
   Wrap<pcl::PointXYZ> wrap;
   wrap.setInputCloud (cloud);
   wrap.setIndices (indices);
+  wrap.setOutput (Output::raw); // the filtration's surfaces are the paper's W
   wrap.setFiltration (true);
   pcl::PolygonMesh mesh;
   wrap.reconstruct (mesh);

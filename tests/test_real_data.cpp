@@ -27,7 +27,7 @@ load (const std::string& name)
 TEST (RealData, BunnyGivesClosedGenusZeroManifoldThroughEveryPoint)
 {
   const auto points = load ("bunny00.off");
-  const WrapResult r = computeWrap (points);
+  const WrapResult r = computeWrap (points, rawOutput ());
   const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
   EXPECT_TRUE (s.closed_manifold);
   EXPECT_TRUE (s.consistently_oriented);
@@ -42,7 +42,7 @@ TEST (RealData, KittenScanAndFandiskModelKeepTheInvariants)
   {
     SCOPED_TRACE (name);
     const auto points = load (name);
-    const WrapResult r = computeWrap (points);
+    const WrapResult r = computeWrap (points, rawOutput ());
     expectWrapInvariants (r);
     std::set<PointIndex> on_w;
     for (const auto& t : r.surface.triangles)
@@ -61,7 +61,7 @@ TEST (RealData, BunnyQuantisedToAMillimetreGridKeepsTheInvariants)
   for (auto& p : points)
     for (double& c : p)
       c = std::round (c * 150.0) / 150.0;
-  const WrapResult r = computeWrap (points);
+  const WrapResult r = computeWrap (points, rawOutput ());
   EXPECT_GT (r.statistics.points_duplicate, 0u);
   EXPECT_GT (r.statistics.perturbations, 0u);
   expectWrapInvariants (r);

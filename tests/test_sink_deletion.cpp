@@ -21,7 +21,7 @@ namespace
 TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
 {
   const auto points = torusSample (1000, 2);
-  WrapParameters parameters;
+  WrapParameters parameters = rawOutput ();
   parameters.delta = 0.2; // between the tube's sinks (0.4^2) and the hole's (0.6^2)
   const WrapResult r = computeWrap (points, parameters);
   const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
@@ -35,7 +35,7 @@ TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
   EXPECT_GT (r.statistics.spacing, 0.0);
 
   // Without a threshold: the basic wrap, which seals the tunnel.
-  const WrapResult basic = computeWrap (points);
+  const WrapResult basic = computeWrap (points, rawOutput ());
   EXPECT_EQ (basic.statistics.sinks_deleted, 0u);
   EXPECT_TRUE (std::isinf (basic.statistics.delta));
   EXPECT_EQ (homology (tuplesOfX (basic)).betti1, 0u);
@@ -44,7 +44,7 @@ TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
 TEST (SinkDeletion, GlobalModeByCountOrThresholdAndTheRelativeRadius)
 {
   const auto points = torusSample (1000, 2);
-  WrapParameters three;
+  WrapParameters three = rawOutput ();
   three.sinks = 3;
   const WrapResult r = computeWrap (points, three);
   EXPECT_EQ (r.statistics.sinks_deleted + r.statistics.sinks_not_principal, 3u);
@@ -52,7 +52,7 @@ TEST (SinkDeletion, GlobalModeByCountOrThresholdAndTheRelativeRadius)
   EXPECT_EQ (h.components, 1u);
   EXPECT_EQ (h.betti1, 1u) << "a solid torus";
 
-  WrapParameters relative;
+  WrapParameters relative = rawOutput ();
   relative.deletion = SinkDeletion::global;
   relative.radius_rel = 4;
   const WrapResult g = computeWrap (points, relative);

@@ -57,8 +57,8 @@ TEST (Weights, ZeroWeightsGiveExactlyTheUnweightedResult)
 {
   for (const auto& points : {cubeSample (800, 3), sphereSample (800, 3, 0.01), torusSample (500, 3)})
   {
-    const WrapResult plain = computeWrap (points);
-    const WrapResult zero = computeWrap (points, std::vector<double> (points.size (), 0.0));
+    const WrapResult plain = computeWrap (points, rawOutput ());
+    const WrapResult zero = computeWrap (points, std::vector<double> (points.size (), 0.0), rawOutput ());
     EXPECT_EQ (zero.surface.triangles, plain.surface.triangles);
     EXPECT_EQ (zero.surface.dangling_edges, plain.surface.dangling_edges);
     EXPECT_EQ (zero.statistics.simplices, plain.statistics.simplices);
@@ -72,7 +72,7 @@ TEST (Weights, HiddenPointInsideFourHeavyPoints)
   // The origin (weight 0) has an empty power cell: for it to be nearer than every corner p_i of
   // the tetrahedron, every <x, p_i> would have to be at most -3.5, but the p_i sum to 0.
   const std::vector<Point3> points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}, {0, 0, 0}};
-  const WrapResult r = computeWrap (points, std::vector<double>{10, 10, 10, 10, 0});
+  const WrapResult r = computeWrap (points, std::vector<double>{10, 10, 10, 10, 0}, rawOutput ());
   EXPECT_EQ (r.hidden, std::vector<PointIndex> ({4}));
   EXPECT_EQ (r.statistics.points_hidden, 1u);
   EXPECT_EQ (r.surface.triangles.size (), 4u); // the regular tetrahedron is a sink: its 4 faces
@@ -86,13 +86,13 @@ TEST (Weights, LightPointFlowsIntoHeavyOne)
   // confident with lowest successor q, q is attached (p is inside its sphere: 1 - 0 < 2), and the
   // collapse leaves p alone. With w_q = -0.5 the edge is a sink and stays.
   const std::vector<Point3> points = {{0, 0, 0}, {1, 0, 0}};
-  const WrapResult collapsed = computeWrap (points, std::vector<double>{0, -2});
+  const WrapResult collapsed = computeWrap (points, std::vector<double>{0, -2}, rawOutput ());
   EXPECT_EQ (collapsed.statistics.simplices[0][int (SimplexClass::equivocal)], 1u);
   EXPECT_EQ (collapsed.statistics.simplices[1][int (SimplexClass::confident)], 1u);
   EXPECT_TRUE (collapsed.surface.dangling_edges.empty ());
   EXPECT_EQ (collapsed.surface.isolated_vertices, std::vector<PointIndex> ({0}));
 
-  const WrapResult kept = computeWrap (points, std::vector<double>{0, -0.5});
+  const WrapResult kept = computeWrap (points, std::vector<double>{0, -0.5}, rawOutput ());
   ASSERT_EQ (kept.surface.dangling_edges.size (), 1u);
   EXPECT_EQ (kept.surface.dangling_edges[0], (std::array<PointIndex, 2>{0, 1}));
 }
@@ -104,10 +104,10 @@ TEST (Weights, ScaleMultipliesEveryWeight)
   auto doubled = weights;
   for (double& w : doubled)
     w *= 2;
-  WrapParameters scaled;
+  WrapParameters scaled = rawOutput ();
   scaled.weight_scale = 2;
-  EXPECT_EQ (computeWrap (points, weights, scaled).surface.triangles, computeWrap (points, doubled).surface.triangles);
-  EXPECT_THROW (computeWrap (points, std::vector<double> (3, 0.0)), std::invalid_argument);
+  EXPECT_EQ (computeWrap (points, weights, scaled).surface.triangles, computeWrap (points, doubled, rawOutput ()).surface.triangles);
+  EXPECT_THROW (computeWrap (points, std::vector<double> (3, 0.0), rawOutput ()), std::invalid_argument);
 }
 
 TEST (Weights, InvariantsOnRandomWeightedSets)
@@ -120,7 +120,7 @@ TEST (Weights, InvariantsOnRandomWeightedSets)
         SCOPED_TRACE ("n " + std::to_string (n) + " seed " + std::to_string (seed));
         const Pipeline p (points, weights);
         expectFlowInvariants (p);
-        const WrapResult r = computeWrap (points, weights);
+        const WrapResult r = computeWrap (points, weights, rawOutput ());
         expectWrapInvariants (r);
         hidden += r.statistics.points_hidden;
         equivocal_vertices += r.statistics.simplices[0][int (SimplexClass::equivocal)];
@@ -142,13 +142,13 @@ TEST (Weights, ParallelInsertionHidesTheSamePointsAsOneThread)
   const std::size_t n = 25000;
   const auto points = cubeSample (n, 11);
   const auto weights = randomWeights (n, 0.0, 2 * std::pow (2.0 / std::cbrt (double (n)), 2), 11);
-  WrapParameters one;
+  WrapParameters one = rawOutput ();
   one.num_threads = 1;
   const WrapResult reference = computeWrap (points, weights, one);
   ASSERT_GT (reference.hidden.size (), 100u);
   for (unsigned threads : {2u, 0u})
   {
-    WrapParameters many;
+    WrapParameters many = rawOutput ();
     many.num_threads = threads;
     const WrapResult r = computeWrap (points, weights, many);
     EXPECT_EQ (r.hidden, reference.hidden);

@@ -48,7 +48,7 @@ TEST (WrapShapes, NoisySphereGivesClosedGenusZeroManifoldThroughEveryPoint)
     {
       SCOPED_TRACE ("n " + std::to_string (n) + " seed " + std::to_string (seed));
       const auto points = sphereSample (n, seed, 1e-3);
-      const WrapResult r = computeWrap (points);
+      const WrapResult r = computeWrap (points, rawOutput ());
       const SurfaceReport s = describeSurface (trianglesOf (r));
       EXPECT_TRUE (s.closed_manifold);
       EXPECT_TRUE (s.consistently_oriented);
@@ -66,7 +66,7 @@ TEST (WrapShapes, MomentCurveGivesPathThroughConsecutivePoints)
   for (unsigned seed = 1; seed <= 5; ++seed)
   {
     const auto points = momentCurveSample (25, seed);
-    const WrapResult r = computeWrap (points);
+    const WrapResult r = computeWrap (points, rawOutput ());
     EXPECT_TRUE (r.surface.triangles.empty ());
     EXPECT_TRUE (r.surface.isolated_vertices.empty ());
     std::set<std::array<PointIndex, 2>> edges (r.surface.dangling_edges.begin (), r.surface.dangling_edges.end ());
@@ -89,7 +89,7 @@ TEST (WrapShapes, TorusIsClosedAndSealedWithPinchEdges)
   {
     SCOPED_TRACE ("seed " + std::to_string (seed));
     const auto points = torusSample (200, seed);
-    const WrapResult r = computeWrap (points);
+    const WrapResult r = computeWrap (points, rawOutput ());
     EXPECT_TRUE (r.surface.dangling_edges.empty ());
     EXPECT_TRUE (r.surface.isolated_vertices.empty ());
 
@@ -105,21 +105,21 @@ TEST (WrapShapes, TorusIsClosedAndSealedWithPinchEdges)
 
 TEST (WrapShapes, NoPointsGiveAnEmptyResult)
 {
-  const WrapResult r = computeWrap ({});
+  const WrapResult r = computeWrap ({}, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, -1);
   EXPECT_TRUE (r.surface.triangles.empty () && r.surface.dangling_edges.empty () && r.surface.isolated_vertices.empty ());
 }
 
 TEST (WrapShapes, OnePointIsAnIsolatedVertex)
 {
-  const WrapResult r = computeWrap ({{1, 2, 3}});
+  const WrapResult r = computeWrap ({{1, 2, 3}}, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, 0);
   EXPECT_EQ (r.surface.isolated_vertices, std::vector<PointIndex> ({0}));
 }
 
 TEST (WrapShapes, TwoPointsAreAnEdge)
 {
-  const WrapResult r = computeWrap ({{0, 0, 0}, {1, 1, 1}});
+  const WrapResult r = computeWrap ({{0, 0, 0}, {1, 1, 1}}, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, 1);
   ASSERT_EQ (r.surface.dangling_edges.size (), 1u);
   EXPECT_EQ (r.surface.dangling_edges[0], (std::array<PointIndex, 2>{0, 1}));
@@ -127,13 +127,13 @@ TEST (WrapShapes, TwoPointsAreAnEdge)
 
 TEST (WrapShapes, AcuteTriangleStaysObtuseTriangleCollapsesToTwoEdges)
 {
-  const WrapResult acute = computeWrap ({{0, 0, 0}, {1, 0, 0}, {0.4, 0.9, 0}});
+  const WrapResult acute = computeWrap ({{0, 0, 0}, {1, 0, 0}, {0.4, 0.9, 0}}, rawOutput ());
   EXPECT_EQ (acute.statistics.triangulation_dimension, 2);
   EXPECT_EQ (acute.surface.triangles.size (), 1u);
   EXPECT_TRUE (acute.surface.dangling_edges.empty ());
 
   // Obtuse at point 2: the long edge 0-1 is attached, so the triangle collapses through it.
-  const WrapResult obtuse = computeWrap ({{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}});
+  const WrapResult obtuse = computeWrap ({{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}}, rawOutput ());
   EXPECT_TRUE (obtuse.surface.triangles.empty ());
   std::set<std::array<PointIndex, 2>> edges (obtuse.surface.dangling_edges.begin (), obtuse.surface.dangling_edges.end ());
   EXPECT_EQ (edges, (std::set<std::array<PointIndex, 2>>{{0, 2}, {1, 2}}));
@@ -141,7 +141,7 @@ TEST (WrapShapes, AcuteTriangleStaysObtuseTriangleCollapsesToTwoEdges)
 
 TEST (WrapShapes, CollinearPointsGiveThePathInOrderAlongTheLine)
 {
-  const WrapResult r = computeWrap ({{0, 0, 0}, {3, 3, 3}, {1, 1, 1}, {2, 2, 2}, {0.5, 0.5, 0.5}});
+  const WrapResult r = computeWrap ({{0, 0, 0}, {3, 3, 3}, {1, 1, 1}, {2, 2, 2}, {0.5, 0.5, 0.5}}, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, 1);
   std::set<std::array<PointIndex, 2>> edges (r.surface.dangling_edges.begin (), r.surface.dangling_edges.end ());
   EXPECT_EQ (edges, (std::set<std::array<PointIndex, 2>>{{0, 4}, {2, 4}, {2, 3}, {1, 3}}));
@@ -159,7 +159,7 @@ TEST (WrapShapes, CoplanarPointsGiveAContractiblePatch)
     p[1] = u (random) / 64.0;
     p[2] = 0.25 * p[0] - 0.5 * p[1];
   }
-  const WrapResult r = computeWrap (points);
+  const WrapResult r = computeWrap (points, rawOutput ());
   ASSERT_EQ (r.statistics.triangulation_dimension, 2);
   const auto x = tuplesOfX (r);
   const Homology h = homology (x);
@@ -176,7 +176,7 @@ TEST (WrapShapes, ExactlyCoplanarGridIsTwoDimensional)
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 5; ++j)
       grid.push_back ({double (i), double (j), 0.0});
-  const WrapResult r = computeWrap (grid);
+  const WrapResult r = computeWrap (grid, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, 2);
   EXPECT_EQ (r.statistics.x_simplices[0], grid.size ());
   const auto x = tuplesOfX (r);
@@ -193,7 +193,7 @@ TEST (WrapShapes, NonFiniteAndDuplicatePointsAreReportedAndNeverUsed)
   points[20] = {0, inf, 0};
   points.push_back (points[5]);  // 300: duplicate of 5
   points.push_back (points[7]);  // 301: duplicate of 7
-  const WrapResult r = computeWrap (points);
+  const WrapResult r = computeWrap (points, rawOutput ());
   EXPECT_EQ (r.skipped, (std::vector<PointIndex>{10, 20}));
   ASSERT_EQ (r.duplicates.size (), 2u);
   EXPECT_EQ (r.duplicates[0], (std::pair<PointIndex, PointIndex>{300, 5}));
@@ -211,7 +211,7 @@ TEST (WrapShapes, NonFiniteAndDuplicatePointsAreReportedAndNeverUsed)
 TEST (WrapShapes, AllPointsNonFiniteGiveAnEmptyResult)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN ();
-  const WrapResult r = computeWrap ({{nan, nan, nan}, {nan, 0, 0}});
+  const WrapResult r = computeWrap ({{nan, nan, nan}, {nan, 0, 0}}, rawOutput ());
   EXPECT_EQ (r.statistics.points_skipped, 2u);
   EXPECT_EQ (r.statistics.triangulation_dimension, -1);
 }

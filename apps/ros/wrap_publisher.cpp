@@ -50,6 +50,11 @@ readParameters (const ros::NodeHandle& private_nh)
     else
       throw std::invalid_argument ("~region takes [x, y, z, r] (a sphere) or [x0, y0, z0, x1, y1, z1] (a box)");
   }
+  std::string output = p.output == pcl_wrap::Output::raw ? "raw" : "surface";
+  private_nh.param ("output", output, output);
+  if (output != "surface" && output != "raw")
+    throw std::invalid_argument ("~output must be surface or raw, not '" + output + "'");
+  p.output = output == "raw" ? pcl_wrap::Output::raw : pcl_wrap::Output::surface;
   private_nh.param ("manifold", p.manifold, p.manifold);
   int threads = static_cast<int> (p.num_threads);
   private_nh.param ("threads", threads, threads);

@@ -72,9 +72,13 @@ public:
     * (with the threshold set above).
     * \param[in] region a Region::sphere or Region::box; Region () for the whole surface */
   void setRegion (const Region& region) { parameters_.region = region; }
-  /** \brief Output a closed 2-manifold: pinch edges and vertices split, with copies of their
-    * points appended to the output cloud after the input points (an organised cloud then
-    * becomes unorganised), sheet triangles once per side.
+  /** \brief The surface reconstruct() returns: Output::surface (default), a closed oriented
+    * 2-manifold through the points, or Output::raw, the paper's W = Bd X as it is.
+    * \param[in] output the output */
+  void setOutput (Output output) { parameters_.output = output; }
+  /** \brief With Output::raw: output a closed 2-manifold: pinch edges and vertices split, with
+    * copies of their points appended to the output cloud after the input points (an organised
+    * cloud then becomes unorganised), sheet triangles once per side.
     * \param[in] manifold true to split (default false: W as it is) */
   void setManifold (bool manifold) { parameters_.manifold = manifold; }
 

@@ -19,6 +19,14 @@ enum class SinkDeletion : std::uint8_t
   global ///< every sink larger than the threshold (or the J largest): may carve cavities
 };
 
+/** \brief What the construction returns as its surface. */
+enum class Output : std::uint8_t
+{
+  surface, ///< a closed, oriented 2-manifold through the points: the boundary of the tetrahedra
+           ///< labelled inside (see docs/surface.md); the default
+  raw      ///< W = Bd X exactly as the paper defines it (pinches, sheets, dangling edges)
+};
+
 /** \brief A closed region of space (a ball or an axis-aligned box) for local modification. */
 struct Region
 {
@@ -91,7 +99,11 @@ struct WrapParameters
     * only. */
   Region region;
 
-  /** \brief Output a closed combinatorial 2-manifold: W's triangles, split where W touches itself
+  /** \brief The surface returned: the clean surface (default) or the paper's W. X, the deletion
+    * and the filtration are the same either way. */
+  Output output = Output::surface;
+
+  /** \brief Raw output only: a closed combinatorial 2-manifold: W's triangles, split where W touches itself
     * (pinch edges and vertices get copies of their points, appended after the input points) and
     * sheet triangles given once per side (ALGORITHM.md §8). See WrapResult::copies. */
   bool manifold = false;

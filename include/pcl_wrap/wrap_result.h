@@ -131,6 +131,10 @@ struct WrapStatistics
   std::size_t pinch_vertices_split = 0;
   std::size_t sheet_triangles_doubled = 0;
 
+  /** \brief The clean surface: tetrahedra moved across it to make it a 2-manifold through the
+    * points. */
+  std::size_t tetrahedra_moved = 0;
+
   std::size_t w_triangles = 0;
   std::size_t w_dangling_edges = 0;
   std::size_t w_isolated_vertices = 0;

@@ -4,7 +4,7 @@
 #
 # Installs the build into a temporary prefix, starts a real roscore on a free port, the node in
 # namespace /basic through the launch file (roslaunch finds it as an installed ROS package), the
-# nodelet standalone in /tight with ~radius_rel 2 and ~manifold, and runs the client test.
+# nodelet standalone in /tight with ~output raw, ~radius_rel 2 and ~manifold, and runs the client test.
 set -euo pipefail
 build=$1 test_binary=$2 data=$3
 work=$(mktemp -d)
@@ -36,7 +36,7 @@ rostopic list > /dev/null || { echo "roscore did not come up:"; cat "$work/rosco
 ROS_NAMESPACE=basic roslaunch --wait pcl_wrap wrap.launch > "$work/launch.log" 2>&1 &
 pids+=($!)
 /usr/lib/nodelet/nodelet standalone pcl_wrap/WrapNodelet __ns:=tight __name:=pcl_wrap \
-  _radius_rel:=2 _manifold:=true > "$work/nodelet.log" 2>&1 &
+  _output:=raw _radius_rel:=2 _manifold:=true > "$work/nodelet.log" 2>&1 &
 pids+=($!)
 
 status=0

@@ -47,6 +47,15 @@ pinchEdges (const WrapResult& r);
 bool
 xMeetsSegment (const WrapResult& r, const std::vector<Point3>& points, const Point3& a, const Point3& b);
 
+/** Parameters for the paper's W as it is (Output::raw), which the invariant checks are about. */
+inline WrapParameters
+rawOutput ()
+{
+  WrapParameters p;
+  p.output = Output::raw;
+  return p;
+}
+
 /** Asserts (gtest) X contractible, W = Bd X and W closed. */
 void
 expectWrapInvariants (const WrapResult& r);

@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The default output: a closed, oriented 2-manifold through the points, of the sampled object's
+// genus, with no parameter, the same triangles at any scale.
+#include "support/samplers.h"
+#include "support/topology.h"
+#include "support/wrap_checks.h"
+
+#include "point_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+std::vector<Point3>
+load (const std::string& name)
+{
+  return apps::readPoints (std::string (PCL_WRAP_DATA_DIR) + "/" + name);
+}
+
+std::vector<Triangle>
+trianglesOf (const WrapResult& r)
+{
+  return {r.surface.triangles.begin (), r.surface.triangles.end ()};
+}
+
+/** The default output of \a points is a closed oriented 2-manifold with \a components parts of
+  * genus \a genus in all, through at least 99% of the points. */
+void
+expectCleanSurface (const std::vector<Point3>& points, std::size_t components, long genus)
+{
+  const WrapResult r = computeWrap (points);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_EQ (s.components, components);
+  EXPECT_EQ (2 * long (s.components) - s.euler, 2 * genus) << "euler " << s.euler;
+  std::set<PointIndex> on;
+  for (const auto& t : r.surface.triangles)
+    for (PointIndex v : t)
+      if (v < points.size ())
+        on.insert (v);
+  EXPECT_GE (on.size () * 100, points.size () * 99) << on.size () << " of " << points.size () << " points on it";
+}
+
+TEST (CleanSurface, RealModelsAreClosedManifoldsOfTheirGenus)
+{
+  {
+    SCOPED_TRACE ("kitten scan: one handle");
+    expectCleanSurface (load ("kitten.xyz"), 1, 1);
+  }
+  {
+    SCOPED_TRACE ("bunny");
+    expectCleanSurface (load ("bunny00.off"), 1, 0);
+  }
+  {
+    SCOPED_TRACE ("fandisk CAD model");
+    expectCleanSurface (load ("fandisk.off"), 1, 0);
+  }
+}
+
+TEST (CleanSurface, TunnelsOpenWithoutAThreshold)
+{
+  {
+    SCOPED_TRACE ("torus");
+    expectCleanSurface (torusSample (6000, 1), 1, 1);
+  }
+  {
+    SCOPED_TRACE ("double torus");
+    expectCleanSurface (doubleTorusSample (12000, 1), 1, 2);
+  }
+}
+
+TEST (CleanSurface, RawOutputIsStillThePapersW)
+{
+  const auto points = torusSample (3000, 2);
+  const WrapResult raw = computeWrap (points, rawOutput ());
+  const WrapResult clean = computeWrap (points);
+  expectWrapInvariants (raw);
+  EXPECT_GT (pinchEdges (raw), 0u) << "the raw W of a torus seals its tunnel with a pinch";
+  EXPECT_EQ (raw.statistics.x_simplices, clean.statistics.x_simplices) << "X does not depend on the output";
+  EXPECT_NE (trianglesOf (raw), trianglesOf (clean));
+}
+
+TEST (CleanSurface, OneSidedCapGivesOneClosedSurfaceThroughItsPoints)
+{
+  // A scanner sees one side of a dome: the points of a hemisphere, no inside behind them.
+  std::vector<Point3> cap;
+  for (const Point3& p : sphereSample (8000, 4, 0.0))
+    if (p[2] > 0)
+      cap.push_back (p);
+  expectCleanSurface (cap, 1, 0);
+}
+
+TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
+{
+  const auto points = load ("kitten.xyz");
+  auto scaled = points;
+  for (auto& p : scaled)
+    for (double& c : p)
+      c *= 1024;
+  EXPECT_EQ (trianglesOf (computeWrap (points)), trianglesOf (computeWrap (scaled)));
+}
+
+TEST (CleanSurface, MovingFarFromTheOriginChangesAlmostNoTriangle)
+{
+  const auto points = torusSample (4000, 3);
+  auto moved = points;
+  for (auto& p : moved)
+    for (double& c : p)
+      c += 1e5;
+  auto a = trianglesOf (computeWrap (points)), b = trianglesOf (computeWrap (moved));
+  for (auto* list : {&a, &b})
+  {
+    for (auto& t : *list)
+      std::rotate (t.begin (), std::min_element (t.begin (), t.end ()), t.end ());
+    std::sort (list->begin (), list->end ());
+  }
+  std::vector<Triangle> common;
+  std::set_intersection (a.begin (), a.end (), b.begin (), b.end (), std::back_inserter (common));
+  EXPECT_GE (common.size () * 100, a.size () * 99) << common.size () << " of " << a.size ();
+}
+
+TEST (CleanSurface, UnevenDensityKeepsTheGenus)
+{
+  // Half of each cloud (x > 0) thinned to a quarter, as a scan denser on one side.
+  std::mt19937 random (5);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  const auto thin = [&] (const std::vector<Point3>& points) {
+    std::vector<Point3> out;
+    for (const Point3& p : points)
+      if (p[0] <= 0 || u (random) < 0.25)
+        out.push_back (p);
+    return out;
+  };
+  {
+    SCOPED_TRACE ("kitten");
+    const auto points = load ("kitten.xyz");
+    double mid = 0;
+    for (const Point3& p : points)
+      mid += p[0] / double (points.size ());
+    auto centred = points;
+    for (auto& p : centred)
+      p[0] -= mid;
+    expectCleanSurface (thin (centred), 1, 1);
+  }
+  {
+    SCOPED_TRACE ("double torus");
+    expectCleanSurface (thin (doubleTorusSample (16000, 6)), 1, 2);
+  }
+}
+
+TEST (CleanSurface, FlatAndTinyInputsGiveWhatTheRawOutputGives)
+{
+  const std::vector<std::vector<Point3>> inputs = {
+      {}, {{1, 2, 3}}, {{0, 0, 0}, {1, 0, 0}, {0.4, 0.9, 0}}, {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}},
+      {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.2, 0}}};
+  for (const auto& points : inputs)
+  {
+    const WrapResult clean = computeWrap (points), raw = computeWrap (points, rawOutput ());
+    EXPECT_EQ (clean.surface.triangles, raw.surface.triangles);
+    EXPECT_EQ (clean.surface.dangling_edges, raw.surface.dangling_edges);
+    EXPECT_EQ (clean.surface.isolated_vertices, raw.surface.isolated_vertices);
+  }
+}
+
+} // namespace
+} // namespace pcl_wrap::test
