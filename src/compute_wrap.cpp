@@ -16,9 +16,9 @@
 #include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
 #include "detail/simplicial_complex.h"
+#include "detail/sink_deletion.h"
 #include "detail/solid_labelling.h"
 #include "detail/solid_repair.h"
-#include "detail/sink_deletion.h"
 #include "detail/stage_clock.h"
 #include "detail/wrap_filtration.h"
 
