@@ -220,13 +220,12 @@ private:
 
   bool inside (std::uint32_t t) const { return t != OUTSIDE_HULL && labels_.inside[t]; }
 
-  /** star_ := the tetrahedra around vertex v, and whether the star reaches the hull. */
+  /** star_ := the tetrahedra around vertex v. */
   void gatherStar (std::uint32_t v)
   {
     ++stamp_;
     star_.clear ();
     v_ = v;
-    hull_ = false;
     const std::uint32_t first = tet_of_vertex_[v];
     if (first == NO_NEIGHBOUR)
       return;
@@ -241,9 +240,7 @@ private:
         if (complex_.vertex (3, t, i) == v)
           continue; // the facet opposite v does not contain it
         const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
-        if (u == OUTSIDE_HULL)
-          hull_ = true;
-        else if (seen_[u] != stamp_)
+        if (u != OUTSIDE_HULL && seen_[u] != stamp_)
         {
           seen_[u] = stamp_;
           slot_[u] = static_cast<std::uint32_t> (star_.size ());
@@ -444,7 +441,6 @@ private:
   std::vector<std::uint32_t> tet_of_vertex_;
   std::vector<std::uint32_t> star_, edge_uses_, parent_, id_of_root_; // reused from star to star
   std::uint32_t v_ = 0;
-  bool hull_ = false;
 };
 
 } // namespace
