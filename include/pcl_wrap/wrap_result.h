@@ -155,8 +155,9 @@ struct WrapResult
   std::array<SimplexList, 4> complex;
   std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
   std::vector<PointIndex> hidden;    ///< points with an empty power cell
-  /** \brief With WrapParameters::manifold: the points copied to split W. Point index n + k (n =
-    * the number of input points) in surface.triangles is a copy of point copies[k]. */
+  /** \brief The points copied to split pinches (the default surface output, or the raw output
+    * with WrapParameters::manifold). Point index n + k (n = the number of input points) in
+    * surface.triangles is a copy of point copies[k]. */
   std::vector<PointIndex> copies;
   /** \brief With WrapParameters::filtration: X(delta) and W(delta) for any delta. */
   Filtration filtration;

@@ -50,9 +50,13 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
 
   const pcl_wrap::WrapResult r = pcl_wrap::computeWrap (points);
   const std::set<pcl_wrap::PointIndex> skipped (r.skipped.begin (), r.skipped.end ());
+  // Index n + k is a copy of point copies[k] (pinches split by the surface stage).
+  const auto original = [&] (pcl_wrap::PointIndex v) {
+    return v < points.size () ? v : r.copies.at (v - points.size ());
+  };
   for (const auto& t : r.surface.triangles)
     for (auto v : t)
-      require (v < points.size () && !skipped.count (v));
+      require (v < points.size () + r.copies.size () && !skipped.count (original (v)));
   require (r.statistics.points_used + r.statistics.points_skipped + r.statistics.points_duplicate +
                r.statistics.points_hidden == points.size ());
   std::size_t x_vertices = 0;
