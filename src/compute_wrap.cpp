@@ -211,22 +211,32 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
     clock.stageDone ("deletion");
   }
 
-  std::unique_ptr<Retraction> solid;
+  // The default surface: the boundary of a labelled solid of Delaunay tetrahedra (labelSolid),
+  // repaired to a manifold (repairSolid); where the repair leaves the surface touching itself,
+  // the pinch split of the raw output separates it.
+  Boundary w;
+  std::unique_ptr<Retraction> pinched_solid;
   if (clean_surface)
   {
     SolidLabels labels = labelSolid (complex, neighbours, vertex_positions, vertex_weights, x);
     clock.stageDone ("labelling");
-    if (!labels.hull)
-      stats.tetrahedra_moved = repairSolid (complex, neighbours, x, labels).flipped;
-    neighbours = {};
-    solid = std::make_unique<Retraction> (complex, classification, solidSubcomplex (complex, labels.inside));
+    const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (complex, neighbours, x, labels);
+    stats.tetrahedra_moved = repair.flipped;
     clock.stageDone ("repair");
+    if (repair.pinched_vertices == 0)
+      w = extractSolidBoundary (complex, neighbours, labels.inside);
+    else
+    {
+      pinched_solid = std::make_unique<Retraction> (complex, classification, solidSubcomplex (complex, labels.inside));
+      w = extractBoundary (complex, *pinched_solid);
+    }
   }
-  const Retraction& shape = solid ? *solid : x;
-  Boundary w = extractBoundary (complex, shape);
-  if (parameters.manifold || solid)
+  else
+    w = extractBoundary (complex, x);
+  neighbours = {};
+  if (pinched_solid || (parameters.manifold && !clean_surface)) // a mended solid needs no split
   {
-    ManifoldSplit split = splitPinches (complex, shape, w);
+    ManifoldSplit split = splitPinches (complex, pinched_solid ? *pinched_solid : x, w);
     w.triangles = std::move (split.triangles);
     // Copies follow the input points: vertex id numVertices() + k -> point points.size () + k.
     for (std::size_t k = 0; k < split.copy_of.size (); ++k)

@@ -3,6 +3,7 @@
 #include "boundary.h"
 
 #include "parallel_for_each.h"
+#include "regular_triangulation.h"
 
 #include <algorithm>
 #include <utility>
@@ -154,6 +155,44 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
     w.dangling_edges.push_back ({v[0], v[1]});
   }
   w.isolated_vertices = principal (0);
+  return w;
+}
+
+Boundary
+extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
+                      const std::vector<std::uint8_t>& inside)
+{
+  Boundary w;
+  const auto facing_out = [&] (std::size_t t, int i) {
+    const std::uint32_t u = neighbours[4 * t + i];
+    return u == NO_NEIGHBOUR || !inside[u];
+  };
+  fillInOrder (
+      inside.size (),
+      [&] (std::size_t t) {
+        std::size_t count = 0;
+        if (inside[t])
+          for (int i = 0; i < 4; ++i)
+            count += facing_out (t, i);
+        return count;
+      },
+      [&] (std::size_t total) {
+        w.triangles.resize (total);
+        w.triangle_ids.resize (total);
+      },
+      [&] (std::size_t id, std::size_t at) {
+        const auto t = static_cast<SimplexId> (id);
+        const std::uint32_t* v = complex.vertices (3, t);
+        if (inside[t])
+          for (int i = 0; i < 4; ++i)
+            if (facing_out (t, i))
+            {
+              const int* o = OUTWARD_FACET[i];
+              w.triangles[at] = {v[o[0]], v[o[1]], v[o[2]]};
+              w.triangle_ids[at++] = complex.facet (3, t, i).id;
+            }
+        return at;
+      });
   return w;
 }
 

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "filled_in_parallel.h"
 #include "retraction.h"
 #include "simplicial_complex.h"
 
@@ -29,6 +30,14 @@ struct Boundary
 /** \brief The boundary of X, the simplices still in Y after \a x has retracted. */
 Boundary
 extractBoundary (const SimplicialComplex& complex, const Retraction& x);
+
+/** \brief The boundary of the tetrahedra flagged in \a inside (which have no lower-dimensional
+  * parts to leave sheets): the facets between an inside and an outside tetrahedron, or the hull,
+  * oriented away from the inside one, in the order of the tetrahedra.
+  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet or NO_NEIGHBOUR */
+Boundary
+extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
+                      const std::vector<std::uint8_t>& inside);
 
 /** \brief \a w with vertex v read as point input_of_vertex[v]. */
 WrapSurface

@@ -58,6 +58,20 @@ orthosphere (const std::uint32_t* v, const std::vector<Point3>& p, const std::ve
   return s;
 }
 
+/** Per tetrahedron: the tetrahedron across each facet (NO_NEIGHBOUR on the hull) and the vote
+  * cast across it, in one half cache line. */
+struct alignas (32) Facets
+{
+  std::uint32_t across[4];
+  float vote[4];
+};
+
+/** Per tetrahedron: the strongest vote received so far for each side. */
+struct Evidence
+{
+  float in = 0.0f, out = 0.0f;
+};
+
 constexpr std::uint8_t UNKNOWN = 0, INSIDE = 1, OUTSIDE = 2;
 constexpr int BUCKETS = 4096;
 
@@ -97,7 +111,7 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
             const std::vector<Point3>& positions, const std::vector<double>& weights, const Retraction& x)
 {
   const std::size_t n = complex.dimension () == 3 ? complex.size (3) : 0;
-  std::vector<Sphere> spheres (n);
+  FilledInParallel<Sphere> spheres (n);
   parallelForEach (n, [&] (std::size_t t) {
     spheres[t] = orthosphere (complex.vertices (3, static_cast<SimplexId> (t)), positions, weights);
   });
@@ -134,17 +148,47 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
                                                         : dot (to_u, to_u) - hu * hu - wa;
     return sphereAngleCosine (rho2, ht, hu);
   };
+  // Every facet's vote, in parallel, before the (sequential) flood reads them, stored next to the
+  // neighbour across it: the flood visits tetrahedra in priority order, all over the mesh, and
+  // reads both at once. A vote is the same from both sides, so each interior facet is computed by
+  // its lower-numbered tetrahedron and copied to the other.
+  FilledInParallel<Facets> facets (n);
+  parallelForEach (n, [&] (std::size_t t) {
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t u = neighbours[4 * t + i];
+      facets[t].across[i] = u;
+      if (u == NO_NEIGHBOUR || u > t)
+        facets[t].vote[i] = static_cast<float> (vote (static_cast<std::uint32_t> (t), i));
+    }
+  });
+  parallelForEach (n, [&] (std::size_t t) {
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t u = facets[t].across[i];
+      if (u != NO_NEIGHBOUR && u < t)
+        for (int j = 0; j < 4; ++j)
+          if (neighbours[4 * std::size_t (u) + j] == t)
+            facets[t].vote[i] = facets[u].vote[j];
+    }
+  });
+  spheres = {};
 
-  std::vector<std::uint8_t> label (n, UNKNOWN);
-  std::vector<float> in (n, 0.0f), out (n, 0.0f);
+  FilledInParallel<Evidence> evidence (n);
+  FilledInParallel<std::uint8_t> label (n);
+  parallelForEach (n, [&] (std::size_t t) {
+    evidence[t] = {};
+    label[t] = UNKNOWN;
+  });
   std::vector<std::vector<std::uint32_t>> queue (BUCKETS);
   int top = -1;
-  const auto cast = [&] (std::uint32_t t, std::uint8_t side, double strength) {
-    float& to = side == INSIDE ? in[t] : out[t];
+  const auto cast = [&] (std::uint32_t t, std::uint8_t side, float strength) {
+    Evidence& e = evidence[t];
+    float& to = side == INSIDE ? e.in : e.out;
     if (strength <= to)
       return;
-    to = static_cast<float> (strength);
-    const int b = bucketOf (in[t], out[t]);
+    to = strength;
+    const int b = bucketOf (e.in, e.out);
     queue[b].push_back (t);
     top = std::max (top, b);
   };
@@ -152,9 +196,9 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
 
   for (std::uint32_t t = 0; t < n; ++t)
     for (int i = 0; i < 4; ++i)
-      if (neighbours[4 * std::size_t (t) + i] == NO_NEIGHBOUR)
+      if (facets[t].across[i] == NO_NEIGHBOUR)
       {
-        const double c = vote (t, i);
+        const float c = facets[t].vote[i];
         cast (t, c < 0 ? INSIDE : OUTSIDE, std::fabs (c));
       }
 
@@ -168,27 +212,27 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
     const int b = top;
     const std::uint32_t t = queue[b].back ();
     queue[b].pop_back ();
-    if (label[t] != UNKNOWN || bucketOf (in[t], out[t]) != b)
+    const Evidence e = evidence[t];
+    if (label[t] != UNKNOWN || bucketOf (e.in, e.out) != b)
       continue; // labelled, or queued again at another priority
-    label[t] = in[t] > out[t] ? INSIDE : out[t] > in[t] ? OUTSIDE : x.inY ({3, t}) ? INSIDE : OUTSIDE;
+    label[t] = e.in > e.out ? INSIDE : e.out > e.in ? OUTSIDE : x.inY ({3, t}) ? INSIDE : OUTSIDE;
+    const Facets& f = facets[t];
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t u = neighbours[4 * std::size_t (t) + i];
+      const std::uint32_t u = f.across[i];
       if (u == NO_NEIGHBOUR || label[u] != UNKNOWN)
         continue;
-      const double c = vote (t, i);
+      const float c = f.vote[i];
       cast (u, c < 0 ? other (label[t]) : label[t], std::fabs (c));
     }
   }
   // A tetrahedron no vote reached (none on a connected triangulation) follows X.
   SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
-  bool any_inside = false;
-  for (std::uint32_t t = 0; t < n; ++t)
-  {
-    labels.inside[t] = label[t] == INSIDE || (label[t] == UNKNOWN && x.inY ({3, t}));
-    labels.margin[t] = std::fabs (in[t] - out[t]);
-    any_inside = any_inside || labels.inside[t];
-  }
+  parallelForEach (n, [&] (std::size_t t) {
+    labels.inside[t] = label[t] == INSIDE || (label[t] == UNKNOWN && x.inY ({3, static_cast<SimplexId> (t)}));
+    labels.margin[t] = std::fabs (evidence[t].in - evidence[t].out);
+  });
+  const bool any_inside = std::find (labels.inside.begin (), labels.inside.end (), 1) != labels.inside.end ();
   // Every sphere voted for the outside (a few points, e.g. a box's corners around its centre): the
   // votes enclose nothing, and the solid is the convex hull.
   labels.hull = !any_inside;

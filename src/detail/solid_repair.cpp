@@ -2,12 +2,15 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "solid_repair.h"
 
+#include "parallel_for_each.h"
 #include "regular_triangulation.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -16,6 +19,72 @@ namespace
 {
 
 constexpr std::uint32_t OUTSIDE_HULL = NO_NEIGHBOUR; // beyond the convex hull: outside for good
+constexpr std::uint32_t NONE = NO_NEIGHBOUR;
+
+/** Where each gathered tetrahedron of one star is in the star's list: a small open-addressing
+  * table, emptied per star in the time it was filled, so that any number of threads can gather
+  * stars at once without a table as large as the mesh. */
+class StarSlots
+{
+public:
+  StarSlots () : keys_ (256, NONE), slots_ (256) {}
+
+  void clear ()
+  {
+    for (std::uint32_t at : used_)
+      keys_[at] = NONE;
+    used_.clear ();
+  }
+
+  std::uint32_t find (std::uint32_t t) const
+  {
+    for (std::uint32_t at = home (t);; at = (at + 1) & mask ())
+      if (keys_[at] == t)
+        return slots_[at];
+      else if (keys_[at] == NONE)
+        return NONE;
+  }
+
+  /** Records \a t at \a slot unless it is there already; returns whether it was new. */
+  bool insert (std::uint32_t t, std::uint32_t slot)
+  {
+    if (2 * (used_.size () + 1) > keys_.size ())
+      grow ();
+    std::uint32_t at = home (t);
+    for (; keys_[at] != NONE; at = (at + 1) & mask ())
+      if (keys_[at] == t)
+        return false;
+    keys_[at] = t;
+    slots_[at] = slot;
+    used_.push_back (at);
+    return true;
+  }
+
+private:
+  std::uint32_t mask () const { return static_cast<std::uint32_t> (keys_.size () - 1); }
+  std::uint32_t home (std::uint32_t t) const { return (t * 2654435761u) >> 8 & mask (); }
+  void grow ()
+  {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+    for (std::uint32_t at : used_)
+      entries.emplace_back (keys_[at], slots_[at]);
+    clear ();
+    keys_.assign (2 * keys_.size (), NONE);
+    slots_.resize (keys_.size ());
+    for (const auto& [t, slot] : entries)
+      insert (t, slot);
+  }
+
+  std::vector<std::uint32_t> keys_, slots_, used_;
+};
+
+/** What one thread needs to look at one vertex's star: reused from star to star. */
+struct StarScratch
+{
+  std::vector<std::uint32_t> star, edge_uses, parent, id_of_root;
+  StarSlots slot;
+  std::uint32_t v = 0;
+};
 
 /** The tetrahedra around one vertex (its star), or around one edge (its ring), and how they split
   * into connected parts on each side of the surface. */
@@ -23,20 +92,34 @@ class Repairer
 {
 public:
   Repairer (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, SolidLabels& labels)
-    : complex_ (complex), neighbours_ (neighbours), labels_ (labels), seen_ (complex.size (3), 0), slot_ (complex.size (3)),
-      flipped_ (complex.size (3), 0), tet_of_vertex_ (complex.numVertices (), NO_NEIGHBOUR)
+    : complex_ (complex), neighbours_ (neighbours), labels_ (labels), flipped_ (complex.size (3), 0),
+      unmended_ (complex.numVertices (), 0), tet_of_vertex_ (complex.numVertices (), NONE)
   {
-    for (SimplexId t = 0; t < complex.size (3); ++t)
+    // Each vertex's highest-numbered tetrahedron, where the gathering of its star starts.
+    parallelForEach (complex.size (3), [&] (std::size_t id) {
+      const auto t = static_cast<std::uint32_t> (id);
       for (int i = 0; i < 4; ++i)
-        tet_of_vertex_[complex.vertex (3, t, i)] = t;
+      {
+        std::uint32_t* at = &tet_of_vertex_[complex.vertex (3, t, i)];
+        std::uint32_t seen = __atomic_load_n (at, __ATOMIC_RELAXED);
+        while ((seen == NONE || seen < t) &&
+               !__atomic_compare_exchange_n (at, &seen, t, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+        {
+        }
+      }
+    });
   }
 
   SolidRepair run (const Retraction& x)
   {
     SolidRepair done;
-    std::vector<std::uint32_t> all (complex_.numVertices ());
-    std::iota (all.rbegin (), all.rend (), 0u); // popped from the back: vertex 0 first
-    mend (all, done);
+    // Most vertices need nothing: find the others on all threads, then mend them in order.
+    const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
+    std::vector<std::uint32_t> work;
+    for (std::uint32_t v = complex_.numVertices (); v-- > 0;)
+      if (needs[v])
+        work.push_back (v); // popped from the back: the lowest first
+    mend (work, done);
     const std::vector<std::uint32_t> joined = join (x);
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
@@ -46,10 +129,84 @@ public:
     std::sort (touched.rbegin (), touched.rend ());
     touched.erase (std::unique (touched.begin (), touched.end ()), touched.end ());
     mend (touched, done);
+    done.pinched_vertices = static_cast<std::size_t> (std::count (unmended_.begin (), unmended_.end (), 1));
     return done;
   }
 
 private:
+  using LinkEdge = std::array<std::uint32_t, 2>;
+
+  /** Per vertex, whether mendVertex() may have something to do there: the vertex is off the
+    * surface, or the surface's triangles around it do not make one fan. Found from the surface
+    * triangles alone, on all threads: each gives its opposite edge to the link of each of its
+    * vertices; a vertex is as it should be when those edges make one cycle. */
+  std::vector<std::uint8_t> surfaceVerticesToMend () const
+  {
+    const std::size_t n = complex_.size (3);
+    std::vector<std::uint8_t> needs (complex_.numVertices (), 1);
+    std::vector<std::size_t> begin;
+    bucketInParallel<LinkEdge> (
+        n, complex_.numVertices (),
+        [&] (std::size_t t, auto put) {
+          if (!labels_.inside[t])
+            return;
+          const std::uint32_t* v = complex_.vertices (3, static_cast<SimplexId> (t));
+          for (int i = 0; i < 4; ++i)
+            if (!inside (neighbours_[4 * t + i]))
+            {
+              const std::uint32_t a = v[(i + 1) & 3], b = v[(i + 2) & 3], c = v[(i + 3) & 3];
+              put (a, LinkEdge{b, c});
+              put (b, LinkEdge{c, a});
+              put (c, LinkEdge{a, b});
+            }
+        },
+        begin,
+        [&] (std::size_t v, auto first, auto last) { needs[v] = !isOneCycle (first, last); });
+    return needs;
+  }
+
+  /** Do the edges [first, last) make one cycle, each vertex on it in exactly two of them? */
+  template <class It>
+  static bool isOneCycle (It first, It last)
+  {
+    const auto k = static_cast<std::size_t> (last - first);
+    if (k < 3)
+      return false;
+    // (end, edge) for both ends of every edge, sorted: a cycle has each end exactly twice.
+    constexpr std::size_t ON_STACK = 64;
+    std::array<std::pair<std::uint32_t, std::uint32_t>, ON_STACK> small;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> large;
+    std::pair<std::uint32_t, std::uint32_t>* ends = small.data ();
+    if (2 * k > ON_STACK)
+    {
+      large.resize (2 * k);
+      ends = large.data ();
+    }
+    for (std::size_t e = 0; e < k; ++e)
+    {
+      ends[2 * e] = {first[e][0], static_cast<std::uint32_t> (e)};
+      ends[2 * e + 1] = {first[e][1], static_cast<std::uint32_t> (e)};
+    }
+    std::sort (ends, ends + 2 * k);
+    for (std::size_t a = 0; a < 2 * k; a += 2)
+      if (ends[a].first != ends[a + 1].first || (a + 2 < 2 * k && ends[a + 2].first == ends[a].first))
+        return false;
+    // Walk from edge 0 until back at its first end: one cycle if that took every edge.
+    const auto other_edge = [&] (std::uint32_t end, std::uint32_t edge) {
+      const auto* at = std::lower_bound (ends, ends + 2 * k, std::make_pair (end, std::uint32_t (0)));
+      return at[0].second == edge ? at[1].second : at[0].second;
+    };
+    std::uint32_t edge = 0, end = first[0][1];
+    std::size_t steps = 1;
+    while (end != first[0][0])
+    {
+      edge = other_edge (end, edge);
+      end = first[edge][0] == end ? first[edge][1] : first[edge][0];
+      ++steps;
+    }
+    return steps == k;
+  }
+
   /** Mends the vertices of \a work (popped from the back) and those of every tetrahedron moved. */
   void mend (std::vector<std::uint32_t> work, SolidRepair& done)
   {
@@ -61,7 +218,8 @@ private:
       const std::uint32_t v = work.back ();
       work.pop_back ();
       queued[v] = 0;
-      const std::vector<std::uint32_t> flips = mendVertex (v);
+      const std::vector<std::uint32_t> flips = mendVertex (v, scratch_);
+      unmended_[v] = flips.empty () && pinched (v, scratch_);
       for (std::uint32_t t : flips)
       {
         labels_.inside[t] ^= 1u;
@@ -208,7 +366,7 @@ private:
     return moved;
   }
 
-  /** Connected parts of the gathered tetrahedra: part[k] for star_[k], count per side. */
+  /** Connected parts of the gathered tetrahedra: part[k] for star[k], count per side. */
   struct Parts
   {
     std::vector<std::uint32_t> part;
@@ -220,43 +378,38 @@ private:
 
   bool inside (std::uint32_t t) const { return t != OUTSIDE_HULL && labels_.inside[t]; }
 
-  /** star_ := the tetrahedra around vertex v. */
-  void gatherStar (std::uint32_t v)
+  /** s.star := the tetrahedra around vertex v, s.slot their places in it. */
+  void gatherStar (std::uint32_t v, StarScratch& s) const
   {
-    ++stamp_;
-    star_.clear ();
-    v_ = v;
+    s.star.clear ();
+    s.slot.clear ();
+    s.v = v;
     const std::uint32_t first = tet_of_vertex_[v];
-    if (first == NO_NEIGHBOUR)
+    if (first == NONE)
       return;
-    star_.push_back (first);
-    seen_[first] = stamp_;
-    slot_[first] = 0;
-    for (std::size_t k = 0; k < star_.size (); ++k)
+    s.star.push_back (first);
+    s.slot.insert (first, 0);
+    for (std::size_t k = 0; k < s.star.size (); ++k)
     {
-      const std::uint32_t t = star_[k];
+      const std::uint32_t t = s.star[k];
       for (int i = 0; i < 4; ++i)
       {
         if (complex_.vertex (3, t, i) == v)
           continue; // the facet opposite v does not contain it
         const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
-        if (u != OUTSIDE_HULL && seen_[u] != stamp_)
-        {
-          seen_[u] = stamp_;
-          slot_[u] = static_cast<std::uint32_t> (star_.size ());
-          star_.push_back (u);
-        }
+        if (u != OUTSIDE_HULL && s.slot.insert (u, static_cast<std::uint32_t> (s.star.size ())))
+          s.star.push_back (u);
       }
     }
   }
 
   /** The connected parts, on each side, of the star's tetrahedra for which \a keep (index into
-    * star_) holds, joined across facets that contain v and every vertex \a through requires. */
+    * s.star) holds, joined across facets that contain s.v and every vertex \a through requires. */
   template <class Keep, class Through = bool (*) (std::uint32_t, int)>
-  Parts split (const Keep& keep, const Through& through = [] (std::uint32_t, int) { return true; })
+  Parts split (StarScratch& s, const Keep& keep, const Through& through = [] (std::uint32_t, int) { return true; }) const
   {
-    const std::size_t m = star_.size ();
-    std::vector<std::uint32_t>& parent = parent_;
+    const std::size_t m = s.star.size ();
+    std::vector<std::uint32_t>& parent = s.parent;
     parent.resize (m + 1);
     std::iota (parent.begin (), parent.end (), 0u);
     const auto find = [&] (std::uint32_t a) {
@@ -264,16 +417,15 @@ private:
         a = parent[a] = parent[parent[a]];
       return a;
     };
-    const auto local = [&] (std::uint32_t u) { return seen_[u] == stamp_ ? slot_[u] : static_cast<std::uint32_t> (m); };
     bool touches_hull = false;
     for (std::size_t k = 0; k < m; ++k)
     {
       if (!keep (static_cast<int> (k)))
         continue;
-      const std::uint32_t t = star_[k];
+      const std::uint32_t t = s.star[k];
       for (int i = 0; i < 4; ++i)
       {
-        if (complex_.vertex (3, t, i) == v_ || !through (t, i))
+        if (complex_.vertex (3, t, i) == s.v || !through (t, i))
           continue;
         const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
         if (u == OUTSIDE_HULL)
@@ -284,25 +436,25 @@ private:
         }
         else if (inside (u) == inside (t) && u > t)
         {
-          const std::uint32_t j = local (u);
-          if (j < m && keep (static_cast<int> (j)))
+          const std::uint32_t j = s.slot.find (u);
+          if (j != NONE && keep (static_cast<int> (j)))
             parent[find (static_cast<std::uint32_t> (k))] = find (j);
         }
       }
     }
     Parts parts;
-    parts.part.assign (m + 1, NO_NEIGHBOUR);
-    std::vector<std::uint32_t>& id_of_root = id_of_root_;
-    id_of_root.assign (m + 1, NO_NEIGHBOUR);
+    parts.part.assign (m + 1, NONE);
+    std::vector<std::uint32_t>& id_of_root = s.id_of_root;
+    id_of_root.assign (m + 1, NONE);
     for (std::size_t k = 0; k <= m; ++k)
     {
       if (k == m ? !touches_hull : !keep (static_cast<int> (k)))
         continue;
       const std::uint32_t r = find (static_cast<std::uint32_t> (k));
-      if (id_of_root[r] == NO_NEIGHBOUR)
+      if (id_of_root[r] == NONE)
       {
         id_of_root[r] = static_cast<std::uint32_t> (parts.side.size ());
-        const std::uint8_t side = k == m ? 0 : inside (star_[k]);
+        const std::uint8_t side = k == m ? 0 : inside (s.star[k]);
         parts.side.push_back (side);
         parts.weight.push_back (0.0);
         parts.movable.push_back (1);
@@ -317,8 +469,8 @@ private:
       }
       else
       {
-        parts.weight[p] += labels_.margin[star_[k]];
-        if (flipped_[star_[k]])
+        parts.weight[p] += labels_.margin[s.star[k]];
+        if (flipped_[s.star[k]])
           parts.movable[p] = 0;
       }
     }
@@ -326,23 +478,23 @@ private:
   }
 
   /** The weakest movable part whose side has more than one part (moving the only part of a side
-    * would take v off the surface); NO_NEIGHBOUR if none. */
+    * would take v off the surface); NONE if none. */
   static std::uint32_t weakest (const Parts& parts)
   {
-    std::uint32_t best = NO_NEIGHBOUR;
+    std::uint32_t best = NONE;
     for (std::uint32_t p = 0; p < parts.side.size (); ++p)
       if (parts.movable[p] && parts.count[parts.side[p]] > 1 &&
-          (best == NO_NEIGHBOUR || parts.weight[p] < parts.weight[best]))
+          (best == NONE || parts.weight[p] < parts.weight[best]))
         best = p;
     return best;
   }
 
-  std::vector<std::uint32_t> members (const Parts& parts, std::uint32_t p) const
+  static std::vector<std::uint32_t> members (const StarScratch& s, const Parts& parts, std::uint32_t p)
   {
     std::vector<std::uint32_t> out;
-    for (std::size_t k = 0; k < star_.size (); ++k)
+    for (std::size_t k = 0; k < s.star.size (); ++k)
       if (parts.part[k] == p)
-        out.push_back (star_[k]);
+        out.push_back (s.star[k]);
     return out;
   }
 
@@ -352,14 +504,14 @@ private:
     return v[0] == vertex || v[1] == vertex || v[2] == vertex || v[3] == vertex;
   }
 
-  /** An edge (v, w) of the gathered star with more than two surface triangles: w, or NO_NEIGHBOUR. */
-  std::uint32_t pinchedEdge (std::uint32_t v)
+  /** An edge (s.v, w) of the gathered star with more than two surface triangles: w, or NONE. */
+  std::uint32_t pinchedEdge (StarScratch& s) const
   {
-    edge_uses_.clear ();
-    for (std::uint32_t t : star_)
+    s.edge_uses.clear ();
+    for (std::uint32_t t : s.star)
       for (int i = 0; i < 4; ++i)
       {
-        if (complex_.vertex (3, t, i) == v)
+        if (complex_.vertex (3, t, i) == s.v)
           continue;
         const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
         if (inside (t) == inside (u) || (u != OUTSIDE_HULL && inside (t) == 0))
@@ -367,53 +519,65 @@ private:
         for (int j = 0; j < 4; ++j)
         {
           const std::uint32_t w = complex_.vertex (3, t, j);
-          if (j != i && w != v)
-            edge_uses_.push_back (w);
+          if (j != i && w != s.v)
+            s.edge_uses.push_back (w);
         }
       }
-    std::sort (edge_uses_.begin (), edge_uses_.end ());
-    for (std::size_t a = 0; a < edge_uses_.size ();)
+    std::sort (s.edge_uses.begin (), s.edge_uses.end ());
+    for (std::size_t a = 0; a < s.edge_uses.size ();)
     {
       std::size_t b = a;
-      while (b < edge_uses_.size () && edge_uses_[b] == edge_uses_[a])
+      while (b < s.edge_uses.size () && s.edge_uses[b] == s.edge_uses[a])
         ++b;
       if (b - a > 2)
-        return edge_uses_[a];
+        return s.edge_uses[a];
       a = b;
     }
-    return NO_NEIGHBOUR;
+    return NONE;
+  }
+
+  /** Does the surface still touch itself at v: a pinched edge, or more than one fan? */
+  bool pinched (std::uint32_t v, StarScratch& s) const
+  {
+    gatherStar (v, s);
+    if (s.star.empty ())
+      return false;
+    if (pinchedEdge (s) != NONE)
+      return true;
+    const Parts parts = split (s, [] (int) { return true; });
+    return parts.count[0] + parts.count[1] > 2;
   }
 
   /** The tetrahedra to move at v (empty: nothing to mend, or nothing allowed). */
-  std::vector<std::uint32_t> mendVertex (std::uint32_t v)
+  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s) const
   {
-    gatherStar (v);
-    if (star_.empty ())
+    gatherStar (v, s);
+    if (s.star.empty ())
       return {};
     // A pinched edge first: its ring's parts, joined only across facets that hold the edge.
-    const std::uint32_t w = pinchedEdge (v);
-    if (w != NO_NEIGHBOUR)
+    const std::uint32_t w = pinchedEdge (s);
+    if (w != NONE)
     {
-      const Parts ring = split ([&] (int k) { return contains (star_[k], w); },
+      const Parts ring = split (s, [&] (int k) { return contains (s.star[k], w); },
                                 [&] (std::uint32_t t, int i) { return complex_.vertex (3, t, i) != w; });
       const std::uint32_t p = weakest (ring);
-      if (p != NO_NEIGHBOUR)
-        return members (ring, p);
+      if (p != NONE)
+        return members (s, ring, p);
     }
-    const Parts parts = split ([] (int) { return true; });
+    const Parts parts = split (s, [] (int) { return true; });
     if (parts.count[0] + parts.count[1] > 2)
     {
       const std::uint32_t p = weakest (parts);
-      if (p != NO_NEIGHBOUR)
-        return members (parts, p);
+      if (p != NONE)
+        return members (s, parts, p);
       return {};
     }
     if (parts.count[0] == 0 || parts.count[1] == 0)
     {
       // Buried or floating: move the weakest tetrahedron of the star that touches the other side.
       const bool buried = parts.count[0] == 0;
-      std::uint32_t best = NO_NEIGHBOUR;
-      for (std::uint32_t t : star_)
+      std::uint32_t best = NONE;
+      for (std::uint32_t t : s.star)
       {
         if (flipped_[t])
           continue;
@@ -423,10 +587,10 @@ private:
           const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
           touches = buried ? !inside (u) : inside (u);
         }
-        if (touches && (best == NO_NEIGHBOUR || labels_.margin[t] < labels_.margin[best]))
+        if (touches && (best == NONE || labels_.margin[t] < labels_.margin[best]))
           best = t;
       }
-      if (best != NO_NEIGHBOUR)
+      if (best != NONE)
         return {best};
     }
     return {};
@@ -435,12 +599,10 @@ private:
   const SimplicialComplex& complex_;
   const FilledInParallel<std::uint32_t>& neighbours_;
   SolidLabels& labels_;
-  std::vector<std::uint32_t> seen_, slot_; // per tetrahedron: gathered at stamp_, at star_[slot_]
-  std::uint32_t stamp_ = 0;
   std::vector<std::uint8_t> flipped_;
+  std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
   std::vector<std::uint32_t> tet_of_vertex_;
-  std::vector<std::uint32_t> star_, edge_uses_, parent_, id_of_root_; // reused from star to star
-  std::uint32_t v_ = 0;
+  StarScratch scratch_; // the sequential mending's
 };
 
 } // namespace

@@ -15,7 +15,8 @@ namespace pcl_wrap::detail
 /** \brief What repairSolid() changed. */
 struct SolidRepair
 {
-  std::size_t flipped = 0; ///< tetrahedra moved to the other side
+  std::size_t flipped = 0;          ///< tetrahedra moved to the other side
+  std::size_t pinched_vertices = 0; ///< vertices where the surface still touches itself
 };
 
 /** \brief Moves tetrahedra across the surface of the solid in \a labels, weakest votes first,
