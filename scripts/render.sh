@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# usage: scripts/render.sh INPUT OUT_DIR [pcl_wrap options for the deletion result]
+# usage: scripts/render.sh INPUT OUT_DIR [pcl_wrap options for both surfaces]
 #
-# Pictures with PCL's pcl_viewer (under Xvfb when there is no display): the input cloud, its
-# basic wrap and a deletion result (default --radius-rel 2), as OUT_DIR/NAME_cloud.png,
-# NAME_wrap.png and NAME_deletion.png. Fails if a picture is blank. Uses build/apps/pcl_wrap, or
-# the tool named by PCL_WRAP_CLI.
+# Pictures with PCL's pcl_viewer (under Xvfb when there is no display): the input cloud, the
+# paper's W (--raw) and the default surface, as OUT_DIR/NAME_cloud.png, NAME_raw.png and
+# NAME_surface.png. Fails if a picture is blank. Uses build/apps/pcl_wrap, or the tool named by
+# PCL_WRAP_CLI.
 set -euo pipefail
 if [ -z "${DISPLAY:-}" ]; then
   exec xvfb-run -a -s "-screen 0 1280x1024x24" "$0" "$@"
@@ -15,20 +15,19 @@ cli=${PCL_WRAP_CLI:-$here/../build/apps/pcl_wrap}
 input=$1 out=$2
 shift 2
 options=("$@")
-[ ${#options[@]} -gt 0 ] || options=(--radius-rel 2)
 name=$(basename "${input%.*}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$out"
 
-"$cli" "$input" "$work/wrap.vtk" --quiet
-"$cli" "$input" "$work/deletion.vtk" --quiet "${options[@]}"
+"$cli" "$input" "$work/raw.vtk" --quiet --raw "${options[@]}"
+"$cli" "$input" "$work/surface.vtk" --quiet "${options[@]}"
 # The cloud: the output's vertices are the input points; pcl_viewer draws float fields.
-"$cli" "$input" "$work/points.obj" --quiet
+"$cli" "$input" "$work/points.obj" --quiet --raw
 awk '/^v / { print $2, $3, $4 }' "$work/points.obj" > "$work/points.xyz"
 pcl_xyz2pcd "$work/points.xyz" "$work/cloud.pcd" > /dev/null
 
-for picture in cloud:cloud.pcd wrap:wrap.vtk deletion:deletion.vtk; do
+for picture in cloud:cloud.pcd raw:raw.vtk surface:surface.vtk; do
   png="$out/${name}_${picture%%:*}.png"
   "$here/view.sh" "$work/${picture#*:}" "$png"
   python3 "$here/png_coverage.py" "$png" 0.02

@@ -15,7 +15,7 @@ PACKAGES=(
   libpcl-msgs-dev libvisualization-msgs-dev python3-roslaunch python3-rostopic rosout catkin
   python3-catkin-pkg
   # Pictures: pcl_viewer and an X server without a display
-  pcl-tools xvfb xauth xdotool
+  pcl-tools xvfb xauth xdotool python3-pil
   # The benchmark's peers from Python (Open3D's ball pivoting and alpha shape) and its plots
   python3-open3d python3-matplotlib
 )

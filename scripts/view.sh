@@ -3,8 +3,9 @@
 # usage: scripts/view.sh FILE OUT.png
 #
 # Opens FILE (.pcd or .vtk) in PCL's pcl_viewer on the current X display, resets the camera to
-# fit it ('r'; points drawn 3 pixels wide) and saves pcl_viewer's own snapshot ('j') as OUT.png. Without a display, run it
-# under xvfb-run: xvfb-run -a -s "-screen 0 1280x1024x24" scripts/view.sh FILE OUT.png
+# fit it ('r'; points drawn 3 pixels wide) and saves pcl_viewer's own snapshot ('j') as OUT.png,
+# without the bottom strip where pcl_viewer writes the file's name and the frame rate. Without a
+# display, run it under xvfb-run: xvfb-run -a -s "-screen 0 1280x1024x24" scripts/view.sh FILE OUT.png
 set -euo pipefail
 file=$(realpath "$1") out=$(realpath -m "$2")
 work=$(mktemp -d)
@@ -40,4 +41,9 @@ if grep -qi "error\|failed" viewer.log; then
   tr '\r' '\n' < viewer.log >&2
   exit 1
 fi
-mv "$snapshot" "$out"
+/usr/bin/python3 - "$snapshot" "$out" << 'EOF' # Debian's, with python3-pil
+import sys
+from PIL import Image
+image = Image.open(sys.argv[1])
+image.crop((0, 0, image.width, image.height - 28)).save(sys.argv[2])
+EOF

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # usage: test_viewer.sh PCL_WRAP_CLI MESH_TO_VTK INPUT
 #
-# Under Xvfb: scripts/render.sh draws INPUT's cloud, wrap and a deletion result with pcl_viewer
+# Under Xvfb: scripts/render.sh draws INPUT's cloud, raw W and default surface with pcl_viewer
 # (each checked not blank); then every output format of the CLI opens in pcl_viewer: .vtk as
 # written, .obj through PCL's pcl_obj2vtk, .ply through PCL's PLY reader.
 set -euo pipefail
@@ -14,7 +14,7 @@ scripts=$(cd "$(dirname "$0")/../../scripts" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-PCL_WRAP_CLI=$cli "$scripts/render.sh" "$input" "$work/pictures" --radius-rel 2
+PCL_WRAP_CLI=$cli "$scripts/render.sh" "$input" "$work/pictures"
 
 for format in vtk obj ply; do
   "$cli" "$input" "$work/w.$format" --quiet
