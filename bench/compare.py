@@ -370,6 +370,10 @@ def main():
             json.dump({"machine": machine, "warm_memory": args.warm_memory, "rows": rows}, f, indent=1)
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args, machine)
+    surface = os.path.join(HERE, "surface_quality.md")  # bench/surface_quality.sh's table, with its reading
+    if os.path.exists(surface):
+        at = lines.index("## Targets")
+        lines[at:at] = open(surface).read().rstrip().split("\n") + [""]
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
     profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
     if os.path.exists(profile):

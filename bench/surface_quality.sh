@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# usage: bench/surface_quality.sh [OUT.md]
+# usage: bench/surface_quality.sh [OUT.md]  (its table goes into bench/surface_quality.md)
 #
 # The quality of pcl_wrap's default surface next to its raw W and to CGAL's Advancing Front,
 # CGAL's Alpha_wrap_3 and PCL's GreedyProjection, on real models and scans from Debian's
