@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// Classification (ALGORITHM.md §2-§4): the engine's exact predicates against an independent
+// Classification (docs/design.md §2-§4): the engine's exact predicates against an independent
 // rational construction, and the invariants of the flow relation on many random inputs.
 #include "support/exact_reference.h"
 #include "support/flow_checks.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// Degenerate input (ALGORITHM.md §7): ties decided by the same symbolic perturbation CGAL's
+// Degenerate input (docs/design.md §7): ties decided by the same symbolic perturbation CGAL's
 // triangulation uses, the invariants on every degenerate family, and an output that depends on
 // neither the order of the points, nor the run, nor the number of threads.
 #include "support/degenerate_samples.h"

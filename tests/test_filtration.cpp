@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// The wrap filtration (ALGORITHM.md §6): sinks deleted by decreasing size, each deletion followed
+// The wrap filtration (docs/design.md §6): sinks deleted by decreasing size, each deletion followed
 // by a retraction, one value per simplex; X(delta) for any delta by a filter.
 #include "support/flow_checks.h"
 #include "support/naive_retraction.h"

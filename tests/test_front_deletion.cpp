@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// Front deletion, "wrap tighter" (ALGORITHM.md §6): sinks larger than delta go only when their
+// Front deletion, "wrap tighter" (docs/design.md §6): sinks larger than delta go only when their
 // basin reaches the surface, so tunnels open and no cavity is ever carved.
 #include "support/pipeline.h"
 #include "support/samplers.h"

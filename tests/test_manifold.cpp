@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// The manifold output option (ALGORITHM.md §8): W split where it touches itself is a closed,
+// The manifold output option (docs/design.md §8): W split where it touches itself is a closed,
 // oriented combinatorial 2-manifold made of W's own triangles, with copies of split points
 // appended after the input points.
 #include "support/degenerate_samples.h"

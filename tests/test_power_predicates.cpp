@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// The one geometric predicate (ALGORITHM.md §2) against the exact rational power of the smallest
+// The one geometric predicate (docs/design.md §2) against the exact rational power of the smallest
 // orthosphere, on queries placed within a few ulps of the sphere and at scales on both sides of
 // the range the double-precision filters accept: a filter may pass a question on to the exact
 // computation, never answer it wrongly. Asked one at a time and a whole simplex at once.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// The retraction (ALGORITHM.md §5): the engine against the naive rescanning retraction, order
+// The retraction (docs/design.md §5): the engine against the naive rescanning retraction, order
 // independence, X contractible, W = Bd X with its triangles oriented away from X.
 #include "support/exact_reference.h"
 #include "support/naive_retraction.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// What Wrap returns on shapes whose answer is known (ALGORITHM.md §5.6, the paper's Figures 1-4),
+// What Wrap returns on shapes whose answer is known (docs/design.md §5, the paper's Figures 1-4),
 // and on inputs whose triangulation has dimension 3, 2, 1, 0 or none.
 #include "support/samplers.h"
 #include "support/topology.h"

@@ -11,7 +11,7 @@
 namespace pcl_wrap
 {
 
-/** \brief How sinks (large empty spheres, ALGORITHM.md §6) are deleted after the basic
+/** \brief How sinks (large empty spheres, docs/design.md §6) are deleted after the basic
   * construction to wrap tighter and open tunnels. */
 enum class SinkDeletion : std::uint8_t
 {
@@ -105,7 +105,7 @@ struct WrapParameters
 
   /** \brief Raw output only: a closed combinatorial 2-manifold: W's triangles, split where W touches itself
     * (pinch edges and vertices get copies of their points, appended after the input points) and
-    * sheet triangles given once per side (ALGORITHM.md §8). See WrapResult::copies. */
+    * sheet triangles given once per side (docs/design.md §8). See WrapResult::copies. */
   bool manifold = false;
 
   /** \brief Compute the wrap filtration: every simplex's value (in the kept complex) and

@@ -19,7 +19,7 @@ namespace pcl_wrap
   * PCL class, into the input cloud). */
 using PointIndex = std::uint32_t;
 
-/** \brief The three kinds of Delaunay simplices of the paper's §5 (ALGORITHM.md §3). */
+/** \brief The three kinds of Delaunay simplices of the paper's §5 (docs/design.md §3). */
 enum class SimplexClass : std::uint8_t
 {
   centered,  ///< a sink: not attached, its smallest orthosphere's centre inside it
@@ -41,14 +41,14 @@ struct SimplexList
   std::vector<std::uint8_t> in_x;    ///< one per simplex: 1 when the simplex is in X
   /** \brief With WrapParameters::filtration, one per simplex: its wrap filtration value, the size
     * of the sink whose deletion removes it from X when every sink is deleted in order of
-    * decreasing size (ALGORITHM.md §6); +inf when the basic construction already removes it,
+    * decreasing size (docs/design.md §6); +inf when the basic construction already removes it,
     * -inf when nothing does. It is in X(delta) iff value <= delta and value < +inf. */
   std::vector<double> values;
 
   std::size_t size () const { return classes.size (); }
 };
 
-/** \brief The surface W = Bd X (ALGORITHM.md §5.5), in point indices. */
+/** \brief The surface W = Bd X (docs/design.md §5), in point indices. */
 struct WrapSurface
 {
   /** \brief Triangles of X with fewer than two tetrahedra of X behind them, oriented with their
@@ -60,7 +60,7 @@ struct WrapSurface
   std::vector<PointIndex> isolated_vertices;
 };
 
-/** \brief The wrap filtration (ALGORITHM.md §6): one pass deleting every sink in order of
+/** \brief The wrap filtration (docs/design.md §6): one pass deleting every sink in order of
   * decreasing size gives each simplex the size at which it leaves X, so X(delta) and W(delta) = Bd
   * X(delta), the global deletion of every sink larger than delta, come out of a linear filter for
   * any delta without a new triangulation or retraction. Nested: X(d1) contains X(d2) for d1 > d2.

@@ -15,7 +15,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief W = Bd X (ALGORITHM.md §5.5) in vertex ids of the complex. */
+/** \brief W = Bd X (docs/design.md §5) in vertex ids of the complex. */
 struct Boundary
 {
   /** \brief Oriented away from the tetrahedron of X behind them; triangles with none behind

@@ -17,7 +17,7 @@ namespace pcl_wrap::detail
 class PowerPredicates;
 
 /** \brief The class of every simplex, the lowest successor of every confident simplex and the
-  * predecessor of every equivocal one (ALGORITHM.md §3-§4). */
+  * predecessor of every equivocal one (docs/design.md §3-§4). */
 struct Classification
 {
   std::array<FilledInParallel<SimplexClass>, 4> classes;

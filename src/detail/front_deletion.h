@@ -19,7 +19,7 @@ struct FrontDeletion
   std::size_t not_principal = 0; ///< larger than delta, still there, never principal
 };
 
-/** \brief "Wrap tighter" without carving cavities (ALGORITHM.md §6, §8's G_delta with the front
+/** \brief "Wrap tighter" without carving cavities (docs/design.md §6, §8's G_delta with the front
   * F = all of W): after the basic retraction of \a y, deletes every sink larger than \a delta
   * whose basin (what its deletion and the retraction after it remove) reaches the current
   * surface, largest first, in passes until a pass deletes none (a deletion can expose sinks

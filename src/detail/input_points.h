@@ -11,7 +11,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief The set S of ALGORITHM.md §1: finite, distinct weighted points, each remembering the
+/** \brief The set S of docs/design.md §1: finite, distinct weighted points, each remembering the
   * input index it came from. */
 struct InputPoints
 {

@@ -102,7 +102,7 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
 }
 
 /** Glues the faces on the pinch edge (a, b) (a < b) pairwise, in the rotation order of the
-  * tetrahedra of Del S around it (ALGORITHM.md §8). Where X has volume at the edge, each face is
+  * tetrahedra of Del S around it (docs/design.md §8). Where X has volume at the edge, each face is
   * glued to the one across X: parts of X that touch along the edge come apart, and a sheet
   * triangle folds back on itself. Where X is only sheets there, each face is glued to the one
   * across the outside, so a sheet continues through the edge. \a choice > 0 picks the other of

@@ -14,7 +14,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief W's triangles as a closed combinatorial 2-manifold (ALGORITHM.md §8). */
+/** \brief W's triangles as a closed combinatorial 2-manifold (docs/design.md §8). */
 struct ManifoldSplit
 {
   /** \brief Oriented triangles; a vertex id v >= numVertices() is a copy of copy_of[v -
@@ -31,7 +31,7 @@ struct ManifoldSplit
   * outside (a run of tetrahedra not in X, found by walking around the edge in Del S) are glued;
   * then every vertex gets one copy per fan of faces glued around it. The faces are the boundary
   * of a thickened X, hence a closed oriented 2-manifold.
-  * \throws std::logic_error if W is not closed (it always is: ALGORITHM.md §5.5) */
+  * \throws std::logic_error if W is not closed (it always is: docs/design.md §5) */
 ManifoldSplit
 splitPinches (const SimplicialComplex& complex, const Retraction& x, const Boundary& w);
 

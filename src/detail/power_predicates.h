@@ -16,7 +16,7 @@ namespace pcl_wrap::detail
   *
   * insideSmallestOrthosphere(T, q): is the weighted point q strictly inside the smallest sphere
   * orthogonal to the 1 to 4 weighted points T (the "smallest orthosphere" of conv T,
-  * ALGORITHM.md §2)? Both the barycentric signs (lambda_i < 0 iff p_i is inside the smallest
+  * docs/design.md §2)? Both the barycentric signs (lambda_i < 0 iff p_i is inside the smallest
   * orthosphere of the opposite facet) and attachment (a link vertex inside the smallest
   * orthosphere) reduce to it.
   *
@@ -24,7 +24,7 @@ namespace pcl_wrap::detail
   * exactly zero, the tie is decided by the symbolic perturbation w_i - eps_i with eps_i vastly
   * larger for points later in lexicographic (x, y, z) order: the perturbation CGAL's
   * Regular_triangulation_3 uses to build the triangulation, so both describe one generic input
-  * (ALGORITHM.md §7). The predicate is affine in the weights, so the perturbed sign is read off
+  * (docs/design.md §7). The predicate is affine in the weights, so the perturbed sign is read off
   * by bumping one weight at a time, from the most perturbed point down.
   */
 class PowerPredicates

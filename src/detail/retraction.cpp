@@ -113,7 +113,7 @@ Retraction::retractInParallel ()
   // every other coface is gone, for good (counts only fall). A thread that sees that may
   // collapse; the exchange on tau's flag lets one thread only do so. The thread whose removal
   // makes the last decrement sees the final count (atomic read-modify-write), so no pair that
-  // becomes free is missed; and the result does not depend on the order (ALGORITHM.md §5).
+  // becomes free is missed; and the result does not depend on the order (docs/design.md §5).
   std::atomic<std::size_t> collapses{0};
   for (int k = 0; k < complex_.dimension (); ++k)
     tbb::parallel_for (tbb::blocked_range<SimplexId> (0, static_cast<SimplexId> (complex_.size (k)), 4096),

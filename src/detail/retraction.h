@@ -13,7 +13,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief The subcomplex Y of Del S and the collapses that shrink it (ALGORITHM.md §5).
+/** \brief The subcomplex Y of Del S and the collapses that shrink it (docs/design.md §5).
   *
   * Y starts as Del S with omega already deleted (omega is never counted as a coface). Every
   * simplex keeps how many of its cofaces one dimension up are still in Y, which is all freeness
@@ -37,7 +37,7 @@ public:
 
   /** \brief Collapses while a pair is collapsible; returns the number of collapses.
     * \param[in] order_seed 0 takes work in a fixed order; any other value in a random order
-    *            drawn from it (the result must not depend on it: ALGORITHM.md §5.4). */
+    *            drawn from it (the result must not depend on it: docs/design.md §5). */
   std::size_t retract (std::uint64_t order_seed = 0);
 
   /** \brief Deletes \a s (§8) if it is in Y and principal (no coface in Y), telling its facets;

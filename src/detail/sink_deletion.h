@@ -15,7 +15,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief Global deletion (ALGORITHM.md §6): the sinks of \a order in turn, while \a keep_going
+/** \brief Global deletion (docs/design.md §6): the sinks of \a order in turn, while \a keep_going
   * (rank, size) says so, each still-present one deleted if principal and followed by a
   * retraction; \a before (rank) is called before each deletion. Returns how many were present but
   * not principal. */

@@ -15,7 +15,7 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief The wrap filtration (ALGORITHM.md §6): every sink deleted in order of decreasing size,
+/** \brief The wrap filtration (docs/design.md §6): every sink deleted in order of decreasing size,
   * each deletion followed by a retraction, and every simplex given the size of the sink whose
   * deletion removed it. X(delta) = the simplices of finite value <= delta, for any delta, by a
   * filter.

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-// The invariants of the flow relation (ALGORITHM.md §4) on a classified complex.
+// The invariants of the flow relation (docs/design.md §4) on a classified complex.
 #include "pipeline.h"
 
 #include <map>

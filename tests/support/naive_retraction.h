@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-// The reference retraction of ALGORITHM.md §5.4: after every collapse it rescans every simplex
+// The reference retraction of docs/design.md §5: after every collapse it rescans every simplex
 // for a collapsible pair and picks one at random. Quadratic; for small inputs only.
 #include <pcl_wrap/wrap_result.h>
 
