@@ -153,7 +153,7 @@ assert any(x[-1] is not None for x in f["3"]) and c["deletion"]["deleted"] == 0
   EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()), 0);
 }
 
-/** Every input format, broken in every way the issue lists: empty, binary junk, truncated,
+/** Every input format, broken in every way a file can be: empty, binary junk, truncated,
   * wrong counts, garbage numbers; plus headers declaring more data than the file holds. */
 std::vector<std::pair<std::string, std::string>>
 malformedFiles ()

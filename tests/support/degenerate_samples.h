@@ -71,7 +71,7 @@ struct NamedSample
   std::vector<Point3> points;
 };
 
-/** Every degenerate family of the issue, with a name for test traces. */
+/** Every degenerate family the suite covers, with a name for test traces. */
 inline std::vector<NamedSample>
 degenerateFamilies ()
 {
