@@ -23,11 +23,13 @@
 #include "detail/wrap_filtration.h"
 
 #include <tbb/global_control.h>
+#include <tbb/task_group.h>
 #include <tbb/info.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -168,6 +170,18 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   input = {};
   clock.stageDone ("triangulation");
 
+  // The default surface starts here: its votes on all threads, then its flood on one thread while
+  // the others build the complex and compute X.
+  const bool clean_surface = parameters.output == Output::surface && triangulation.dimension == 3;
+  std::optional<SolidLabelling> labelling;
+  tbb::task_group flooding;
+  if (clean_surface)
+  {
+    labelling.emplace (triangulation.top_simplices, triangulation.neighbours, vertex_positions, vertex_weights);
+    clock.stageDone ("votes");
+    flooding.run ([&labelling] { labelling->flood (); });
+  }
+
   // Shared: a filtration in the result keeps the complex and the classes.
   SimplicialComplex built (triangulation.dimension, static_cast<std::uint32_t> (input_of_vertex.size ()),
                            std::move (triangulation.top_simplices), triangulation.neighbours);
@@ -175,7 +189,6 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   const auto complex_kept = std::make_shared<const SimplicialComplex> (std::move (built));
   const SimplicialComplex& complex = *complex_kept;
   // The surface stage walks from tetrahedron to tetrahedron.
-  const bool clean_surface = parameters.output == Output::surface && complex.dimension () == 3;
   FilledInParallel<std::uint32_t> neighbours;
   if (clean_surface)
     neighbours = std::move (triangulation.neighbours);
@@ -211,14 +224,16 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
     clock.stageDone ("deletion");
   }
 
-  // The default surface: the boundary of a labelled solid of Delaunay tetrahedra (labelSolid),
+  // The default surface: the boundary of a labelled solid of Delaunay tetrahedra (SolidLabelling),
   // repaired to a manifold (repairSolid); where the repair leaves the surface touching itself,
   // the pinch split of the raw output separates it.
   Boundary w;
   std::unique_ptr<Retraction> pinched_solid;
   if (clean_surface)
   {
-    SolidLabels labels = labelSolid (complex, neighbours, vertex_positions, vertex_weights, x);
+    flooding.wait ();
+    SolidLabels labels = labelling->labels (x);
+    labelling.reset ();
     clock.stageDone ("labelling");
     const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (complex, neighbours, x, labels);
     stats.tetrahedra_moved = repair.flipped;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 namespace pcl_wrap::detail
 {
@@ -58,27 +59,13 @@ orthosphere (const std::uint32_t* v, const std::vector<Point3>& p, const std::ve
   return s;
 }
 
-/** Per tetrahedron: the tetrahedron across each facet (NO_NEIGHBOUR on the hull) and the vote
-  * cast across it, in one half cache line. */
-struct alignas (32) Facets
-{
-  std::uint32_t across[4];
-  float vote[4];
-};
-
-/** Per tetrahedron: the strongest vote received so far for each side. */
-struct Evidence
-{
-  float in = 0.0f, out = 0.0f;
-};
-
-constexpr std::uint8_t UNKNOWN = 0, INSIDE = 1, OUTSIDE = 2;
-constexpr int BUCKETS = 4096;
+constexpr double VOTE_ONE = 32767; // a cosine of 1 in fixed point
+constexpr std::uint8_t UNKNOWN = 0, INSIDE = 1, OUTSIDE = 2, TIED = 3;
 
 int
-bucketOf (float in, float out)
+bucketOf (std::uint16_t in, std::uint16_t out)
 {
-  return std::min (BUCKETS - 1, static_cast<int> (std::fabs (in - out) * BUCKETS));
+  return std::abs (int (in) - int (out)) >> 3; // 32767 >> 3: the last bucket
 }
 
 } // namespace
@@ -106,20 +93,20 @@ sphereAngleCosine (double rho2, double ha, double hb)
   return std::isfinite (c) ? std::clamp (c, -1.0, 1.0) : 0.0;
 }
 
-SolidLabels
-labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-            const std::vector<Point3>& positions, const std::vector<double>& weights, const Retraction& x)
+SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra,
+                                const FilledInParallel<std::uint32_t>& neighbours,
+                                const std::vector<Point3>& positions, const std::vector<double>& weights)
+  : tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
 {
-  const std::size_t n = complex.dimension () == 3 ? complex.size (3) : 0;
+  const std::size_t n = tets_.size ();
+  const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
   FilledInParallel<Sphere> spheres (n);
-  parallelForEach (n, [&] (std::size_t t) {
-    spheres[t] = orthosphere (complex.vertices (3, static_cast<SimplexId> (t)), positions, weights);
-  });
+  parallelForEach (n, [&] (std::size_t t) { spheres[t] = orthosphere (vertices (t), positions, weights); });
 
   // The vote of the sphere of t across its facet i for the other side: the cosine of the angle
   // at which the two spheres meet. Heights are taken along the facet's normal towards t's apex.
-  const auto vote = [&] (std::uint32_t t, int i) -> double {
-    const std::uint32_t* v = complex.vertices (3, t);
+  const auto vote = [&] (std::size_t t, int i) -> double {
+    const std::uint32_t* v = vertices (t);
     const Point3& a = positions[v[(i + 1) & 3]];
     const Vec normal_raw =
         cross (minus (positions[v[(i + 2) & 3]], a), minus (positions[v[(i + 3) & 3]], a));
@@ -132,7 +119,7 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
     const Vec to_t = minus (spheres[t].centre, a);
     const double ht = dot (to_t, normal);
     const double wa = weights[v[(i + 1) & 3]];
-    const std::uint32_t u = neighbours[4 * std::size_t (t) + i];
+    const std::uint32_t u = neighbours[4 * t + i];
     if (u == NO_NEIGHBOUR) // the outside: a half-space, its centre infinitely far below the facet
     {
       const double rho2 = dot (to_t, to_t) - ht * ht - wa;
@@ -148,89 +135,116 @@ labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32
                                                         : dot (to_u, to_u) - hu * hu - wa;
     return sphereAngleCosine (rho2, ht, hu);
   };
-  // Every facet's vote, in parallel, before the (sequential) flood reads them, stored next to the
-  // neighbour across it: the flood visits tetrahedra in priority order, all over the mesh, and
-  // reads both at once. A vote is the same from both sides, so each interior facet is computed by
-  // its lower-numbered tetrahedron and copied to the other.
-  FilledInParallel<Facets> facets (n);
+  // A vote is the same from both sides: each interior facet's is computed by its lower-numbered
+  // tetrahedron and copied to the other.
   parallelForEach (n, [&] (std::size_t t) {
+    Record& r = tets_[t];
+    r.in = r.out = 0;
+    r.label = UNKNOWN;
     for (int i = 0; i < 4; ++i)
     {
       const std::uint32_t u = neighbours[4 * t + i];
-      facets[t].across[i] = u;
+      r.across[i] = u;
       if (u == NO_NEIGHBOUR || u > t)
-        facets[t].vote[i] = static_cast<float> (vote (static_cast<std::uint32_t> (t), i));
+        r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
     }
   });
   parallelForEach (n, [&] (std::size_t t) {
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t u = facets[t].across[i];
+      const std::uint32_t u = tets_[t].across[i];
       if (u != NO_NEIGHBOUR && u < t)
         for (int j = 0; j < 4; ++j)
-          if (neighbours[4 * std::size_t (u) + j] == t)
-            facets[t].vote[i] = facets[u].vote[j];
+          if (tets_[u].across[j] == t)
+            tets_[t].vote[i] = tets_[u].vote[j];
     }
   });
-  spheres = {};
+}
 
-  FilledInParallel<Evidence> evidence (n);
-  FilledInParallel<std::uint8_t> label (n);
-  parallelForEach (n, [&] (std::size_t t) {
-    evidence[t] = {};
-    label[t] = UNKNOWN;
-  });
-  std::vector<std::vector<std::uint32_t>> queue (BUCKETS);
-  int top = -1;
-  const auto cast = [&] (std::uint32_t t, std::uint8_t side, float strength) {
-    Evidence& e = evidence[t];
-    float& to = side == INSIDE ? e.in : e.out;
-    if (strength <= to)
-      return;
-    to = strength;
-    const int b = bucketOf (e.in, e.out);
-    queue[b].push_back (t);
-    top = std::max (top, b);
-  };
-  const auto other = [] (std::uint8_t side) { return side == INSIDE ? OUTSIDE : INSIDE; };
+void
+SolidLabelling::cast (std::uint32_t t, std::uint8_t side, int vote)
+{
+  Record& r = tets_[t];
+  const auto strength = static_cast<std::uint16_t> (std::abs (vote));
+  std::uint16_t& to = side == INSIDE ? r.in : r.out;
+  if (strength <= to)
+    return;
+  to = strength;
+  const int b = bucketOf (r.in, r.out);
+  queue_[b].push_back (t);
+  top_ = std::max (top_, b);
+}
 
-  for (std::uint32_t t = 0; t < n; ++t)
-    for (int i = 0; i < 4; ++i)
-      if (facets[t].across[i] == NO_NEIGHBOUR)
-      {
-        const float c = facets[t].vote[i];
-        cast (t, c < 0 ? INSIDE : OUTSIDE, std::fabs (c));
-      }
-
-  while (top >= 0)
+void
+SolidLabelling::castFrom (std::uint32_t t)
+{
+  const Record& r = tets_[t];
+  const std::uint8_t other = r.label == INSIDE ? OUTSIDE : INSIDE;
+  for (int i = 0; i < 4; ++i)
   {
-    if (queue[top].empty ())
+    const std::uint32_t u = r.across[i];
+    if (u != NO_NEIGHBOUR && tets_[u].label == UNKNOWN)
+      cast (u, r.vote[i] < 0 ? other : r.label, r.vote[i]);
+  }
+}
+
+void
+SolidLabelling::run (const Retraction* x)
+{
+  while (top_ >= 0)
+  {
+    std::vector<std::uint32_t>& bucket = queue_[top_];
+    if (bucket.empty ())
     {
-      --top;
+      --top_;
       continue;
     }
-    const int b = top;
-    const std::uint32_t t = queue[b].back ();
-    queue[b].pop_back ();
-    const Evidence e = evidence[t];
-    if (label[t] != UNKNOWN || bucketOf (e.in, e.out) != b)
+    const int b = top_;
+    const std::uint32_t t = bucket.back ();
+    bucket.pop_back ();
+    Record& r = tets_[t];
+    if (r.label != UNKNOWN || bucketOf (r.in, r.out) != b)
       continue; // labelled, or queued again at another priority
-    label[t] = e.in > e.out ? INSIDE : e.out > e.in ? OUTSIDE : x.inY ({3, t}) ? INSIDE : OUTSIDE;
-    const Facets& f = facets[t];
-    for (int i = 0; i < 4; ++i)
+    if (r.in == r.out && !x)
     {
-      const std::uint32_t u = f.across[i];
-      if (u == NO_NEIGHBOUR || label[u] != UNKNOWN)
-        continue;
-      const float c = f.vote[i];
-      cast (u, c < 0 ? other (label[t]) : label[t], std::fabs (c));
+      r.label = TIED; // for X to break, when it is known
+      tied_.push_back (t);
+      continue;
     }
+    r.label = r.in > r.out ? INSIDE : r.out > r.in ? OUTSIDE : x->inY ({3, t}) ? INSIDE : OUTSIDE;
+    castFrom (t);
   }
+}
+
+void
+SolidLabelling::flood ()
+{
+  for (std::uint32_t t = 0; t < tets_.size (); ++t)
+    for (int i = 0; i < 4; ++i)
+      if (tets_[t].across[i] == NO_NEIGHBOUR)
+        cast (t, tets_[t].vote[i] < 0 ? INSIDE : OUTSIDE, tets_[t].vote[i]);
+  run (nullptr);
+}
+
+SolidLabels
+SolidLabelling::labels (const Retraction& x)
+{
+  // Ties are votes of exactly equal strength, the last the flood reaches: broken by X, and the
+  // flood finished from them.
+  for (std::uint32_t t : tied_)
+  {
+    tets_[t].label = x.inY ({3, t}) ? INSIDE : OUTSIDE;
+    castFrom (t);
+  }
+  tied_.clear ();
+  run (&x);
   // A tetrahedron no vote reached (none on a connected triangulation) follows X.
+  const std::size_t n = tets_.size ();
   SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
   parallelForEach (n, [&] (std::size_t t) {
-    labels.inside[t] = label[t] == INSIDE || (label[t] == UNKNOWN && x.inY ({3, static_cast<SimplexId> (t)}));
-    labels.margin[t] = std::fabs (evidence[t].in - evidence[t].out);
+    const Record& r = tets_[t];
+    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x.inY ({3, static_cast<SimplexId> (t)}));
+    labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
   });
   const bool any_inside = std::find (labels.inside.begin (), labels.inside.end (), 1) != labels.inside.end ();
   // Every sphere voted for the outside (a few points, e.g. a box's corners around its centre): the

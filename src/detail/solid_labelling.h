@@ -15,7 +15,15 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief Which Delaunay tetrahedra are inside the sampled solid: 1 inside, 0 outside.
+/** \brief Which Delaunay tetrahedra are inside the solid: SolidLabelling::labels(). */
+struct SolidLabels
+{
+  std::vector<std::uint8_t> inside; ///< per tetrahedron: 1 inside, 0 outside
+  std::vector<float> margin;        ///< per tetrahedron: how much the winning vote beat the other
+  bool hull = false;                ///< no vote enclosed anything: every tetrahedron is inside
+};
+
+/** \brief Labels the Delaunay tetrahedra inside or outside the sampled solid.
   *
   * Every tetrahedron has an empty sphere (its orthosphere). Where two tetrahedra share a triangle
   * their spheres meet at an angle: spheres on one side of a sampled surface overlap deeply (they
@@ -26,21 +34,49 @@ namespace pcl_wrap::detail
   * strongest undecided vote (a priority flood, as in Amenta, Choi and Kolluri's power crust), so
   * that weak, ambiguous votes are cast last, by which time their neighbourhood is decided.
   *
-  * Wrap's X (\a x) breaks ties: with equal votes for both sides, a tetrahedron of X is inside.
-  * When no tetrahedron at all comes out inside, the solid is the convex hull (SolidLabels::hull).
-  *
-  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet or NO_NEIGHBOUR on the
-  *            hull (Triangulation::neighbours) */
-struct SolidLabels
+  * Three steps, so that the flood, which is sequential, can run while other threads compute X:
+  * the constructor computes the votes on all threads; flood() reads nothing but the votes; the
+  * ties it meets (votes of exactly equal strength for both sides) wait for labels(), where Wrap's
+  * X breaks them: a tetrahedron of X is inside. When no tetrahedron at all comes out inside, the
+  * solid is the convex hull (SolidLabels::hull). */
+class SolidLabelling
 {
-  std::vector<std::uint8_t> inside; ///< per tetrahedron: 1 inside, 0 outside
-  std::vector<float> margin;        ///< per tetrahedron: how much the winning vote beat the other
-  bool hull = false;                ///< no vote enclosed anything: every tetrahedron is inside
-};
+public:
+  /** \param[in] tetrahedra four vertex ids per tetrahedron
+    * \param[in] neighbours per tetrahedron, the tetrahedron across each facet (opposite the
+    *            vertex of the same slot) or NO_NEIGHBOUR on the hull */
+  SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const FilledInParallel<std::uint32_t>& neighbours,
+                  const std::vector<Point3>& positions, const std::vector<double>& weights);
 
-SolidLabels
-labelSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-            const std::vector<Point3>& positions, const std::vector<double>& weights, const Retraction& x);
+  /** \brief The priority flood from the outside, on the calling thread. */
+  void flood ();
+
+  /** \brief The ties broken by \a x, the flood finished, and the labels. Call once, after flood(). */
+  SolidLabels labels (const Retraction& x);
+
+private:
+  /** Per tetrahedron, everything the flood reads and writes, in half a cache line: the flood
+    * visits tetrahedra in priority order, all over the mesh, so a visit costs one memory access.
+    * Votes and evidence are fixed point, finer than the flood's buckets. */
+  struct alignas (32) Record
+  {
+    std::uint32_t across[4]; ///< the tetrahedron across each facet, NO_NEIGHBOUR on the hull
+    std::int16_t vote[4];    ///< the vote cast across each facet
+    std::uint16_t in, out;   ///< the strongest vote received so far for each side
+    std::uint8_t label;
+  };
+  static_assert (sizeof (Record) == 32);
+  static constexpr int BUCKETS = 4096; ///< of the margin between the votes for the two sides
+
+  void cast (std::uint32_t t, std::uint8_t side, int vote);
+  void castFrom (std::uint32_t t);
+  void run (const Retraction* x); ///< without X, ties are set aside
+
+  FilledInParallel<Record> tets_;
+  std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
+  int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
+  std::vector<std::uint32_t> tied_;
+};
 
 /** \brief The tetrahedra flagged in \a inside and all their faces, per dimension: the subcomplex
   * whose boundary is the surface. */

@@ -218,8 +218,9 @@ private:
       const std::uint32_t v = work.back ();
       work.pop_back ();
       queued[v] = 0;
-      const std::vector<std::uint32_t> flips = mendVertex (v, scratch_);
-      unmended_[v] = flips.empty () && pinched (v, scratch_);
+      bool pinched = false;
+      const std::vector<std::uint32_t> flips = mendVertex (v, scratch_, pinched);
+      unmended_[v] = flips.empty () && pinched;
       for (std::uint32_t t : flips)
       {
         labels_.inside[t] ^= 1u;
@@ -250,6 +251,61 @@ private:
     return false;
   }
 
+  /** Per tetrahedron, the connected part of the solid it is in (NO_NEIGHBOUR outside), numbered
+    * in the order of their lowest tetrahedra; \a size_of gets their sizes. On all threads: a
+    * union-find whose roots are always their tree's lowest tetrahedron, so the answer does not
+    * depend on the order in which the threads link. */
+  std::vector<std::uint32_t> solidParts (std::vector<std::uint32_t>& size_of) const
+  {
+    const std::size_t n = complex_.size (3);
+    FilledInParallel<std::uint32_t> root (n);
+    parallelForEach (n, [&] (std::size_t t) { root[t] = static_cast<std::uint32_t> (t); });
+    const auto find = [&] (std::uint32_t a) {
+      for (std::uint32_t up; (up = __atomic_load_n (&root[a], __ATOMIC_RELAXED)) != a;)
+        a = up;
+      return a;
+    };
+    parallelForEach (n, [&] (std::size_t t) {
+      if (!labels_.inside[t])
+        return;
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t u = neighbours_[4 * t + i];
+        if (u == OUTSIDE_HULL || u < t || !labels_.inside[u])
+          continue;
+        std::uint32_t a = static_cast<std::uint32_t> (t), b = u;
+        while (true)
+        {
+          a = find (a);
+          b = find (b);
+          if (a == b)
+            break;
+          if (a > b)
+            std::swap (a, b);
+          std::uint32_t expected = b; // b is still a root: hang it under the lower a
+          if (__atomic_compare_exchange_n (&root[b], &expected, a, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+            break;
+        }
+      }
+    });
+    std::vector<std::uint32_t> part (n, NO_NEIGHBOUR);
+    for (std::uint32_t t = 0; t < n; ++t)
+      if (labels_.inside[t] && root[t] == t)
+      {
+        part[t] = static_cast<std::uint32_t> (size_of.size ());
+        size_of.push_back (0);
+      }
+    parallelForEach (n, [&] (std::size_t t) {
+      const std::uint32_t r = labels_.inside[t] ? find (static_cast<std::uint32_t> (t)) : NO_NEIGHBOUR;
+      if (r != NO_NEIGHBOUR && r != t)
+        part[t] = part[r];
+    });
+    for (std::uint32_t t = 0; t < n; ++t)
+      if (part[t] != NO_NEIGHBOUR)
+        ++size_of[part[t]];
+    return part;
+  }
+
   /** Joins the connected parts of the solid that X's tetrahedra join: from each part but the
     * largest, smallest first, the cheapest path (by summed margins) of outside tetrahedra of X
     * to another part moves inside. X is contractible, so a part cut off the solid by the labelling
@@ -258,32 +314,8 @@ private:
   std::vector<std::uint32_t> join (const Retraction& x)
   {
     const std::size_t n = complex_.size (3);
-    std::vector<std::uint32_t> part (n, NO_NEIGHBOUR);
     std::vector<std::uint32_t> size_of;
-    for (std::uint32_t t = 0; t < n; ++t)
-    {
-      if (!labels_.inside[t] || part[t] != NO_NEIGHBOUR)
-        continue;
-      const auto p = static_cast<std::uint32_t> (size_of.size ());
-      size_of.push_back (0);
-      std::vector<std::uint32_t> stack{t};
-      part[t] = p;
-      while (!stack.empty ())
-      {
-        const std::uint32_t a = stack.back ();
-        stack.pop_back ();
-        ++size_of[p];
-        for (int i = 0; i < 4; ++i)
-        {
-          const std::uint32_t b = neighbours_[4 * std::size_t (a) + i];
-          if (b != OUTSIDE_HULL && labels_.inside[b] && part[b] == NO_NEIGHBOUR)
-          {
-            part[b] = p;
-            stack.push_back (b);
-          }
-        }
-      }
-    }
+    const std::vector<std::uint32_t> part = solidParts (size_of);
     std::vector<std::uint32_t> moved;
     if (size_of.size () < 2)
       return moved;
@@ -536,20 +568,9 @@ private:
     return NONE;
   }
 
-  /** Does the surface still touch itself at v: a pinched edge, or more than one fan? */
-  bool pinched (std::uint32_t v, StarScratch& s) const
-  {
-    gatherStar (v, s);
-    if (s.star.empty ())
-      return false;
-    if (pinchedEdge (s) != NONE)
-      return true;
-    const Parts parts = split (s, [] (int) { return true; });
-    return parts.count[0] + parts.count[1] > 2;
-  }
-
-  /** The tetrahedra to move at v (empty: nothing to mend, or nothing allowed). */
-  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s) const
+  /** The tetrahedra to move at v (empty: nothing to mend, or nothing allowed); \a pinched: the
+    * surface touches itself at v (a pinched edge, or more than one fan). */
+  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s, bool& pinched) const
   {
     gatherStar (v, s);
     if (s.star.empty ())
@@ -565,6 +586,7 @@ private:
         return members (s, ring, p);
     }
     const Parts parts = split (s, [] (int) { return true; });
+    pinched = w != NONE || parts.count[0] + parts.count[1] > 2;
     if (parts.count[0] + parts.count[1] > 2)
     {
       const std::uint32_t p = weakest (parts);

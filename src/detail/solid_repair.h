@@ -30,7 +30,7 @@ struct SolidRepair
   * - parts of the solid cut off from the rest are joined to it along X (see docs/surface.md).
   * Each tetrahedron changes side at most once, so the repair ends; a pinch it cannot mend is left
   * to the pinch split (splitPinches()).
-  * \param[in] neighbours as for labelSolid() */
+  * \param[in] neighbours as for SolidLabelling */
 SolidRepair
 repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Retraction& x,
              SolidLabels& labels);
