@@ -14,7 +14,7 @@ namespace pcl_wrap::bench
 std::vector<Point3>
 makePoints (const std::string& shape, std::size_t n, unsigned seed)
 {
-  if (shape != "sphere" && shape != "cube" && shape != "torus")
+  if (shape != "sphere" && shape != "cube" && shape != "torus" && shape != "terrain")
     return pcl_wrap::apps::readPoints (shape);
   std::mt19937_64 random (seed);
   std::normal_distribution<double> g;
@@ -23,6 +23,11 @@ makePoints (const std::string& shape, std::size_t n, unsigned seed)
   for (auto& q : p)
     if (shape == "cube")
       q = {u (random), u (random), u (random)};
+    else if (shape == "terrain")
+    {
+      const double x = u (random), y = u (random);
+      q = {x, y, 0.2 * std::sin (3 * x) * std::cos (2 * y)};
+    }
     else if (shape == "torus")
     {
       const double a = angle (random), b = angle (random);

@@ -4,7 +4,7 @@
 #
 # The quality of pcl_wrap's default surface next to its raw W and to CGAL's Advancing Front,
 # CGAL's Alpha_wrap_3 and PCL's GreedyProjection, on real models and scans from Debian's
-# libcgal-demo and on a synthetic torus: a Markdown table (closed = watertight, every edge in two
+# libcgal-demo and on a synthetic torus and terrain: a Markdown table (closed = watertight, every edge in two
 # triangles; manifold = no non-manifold edge or vertex; share of the input points on the
 # surface; Chamfer and Hausdorff distances to the reference mesh, relative to its diagonal, or to
 # the input points where there is no mesh; time). Needs scripts/build.sh first.
@@ -17,7 +17,7 @@ data=$here/../data/fetched/quality
 mkdir -p "$data"
 files=(meshes/bunny00.off meshes/fandisk.off points_3/kitten.xyz meshes/cow.off meshes/bull.off
        meshes/triceratops.off meshes/knot1.off meshes/blobby.off meshes/anchor_dense.off
-       meshes/man.off meshes/cheese.off points_3/oni.ply points_3/ball.ply)
+       meshes/man.off meshes/cheese.off points_3/oni.ply points_3/ball.ply points_3/sphere_20k.xyz)
 for f in "${files[@]}"; do
   [ -s "$data/$(basename "$f")" ] || tar -xzf "$archive" -O "data/$f" > "$data/$(basename "$f")"
 done
@@ -27,7 +27,7 @@ trap 'rm -rf "$work"' EXIT
 {
   echo "| dataset | method | triangles | closed | manifold | components | genus | points on it | Chamfer | Hausdorff | s |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
-  for source in "${files[@]/#/$data/}" torus; do
+  for source in "${files[@]/#/$data/}" torus terrain; do
     source=${source/#$data\/meshes\//$data/}
     source=${source/#$data\/points_3\//$data/}
     name=$(basename "$source")
@@ -35,6 +35,7 @@ trap 'rm -rf "$work"' EXIT
     case $source in
       *.off) reference=$source ;;
       torus) reference=torus n=20000 ;;
+      terrain) n=5000 ;;
     esac
     for method in "${methods[@]}"; do
       if ! timeout 600 "$bench/bench_peers" "$method" "$source" "$n" 1 --mesh "$work/mesh.obj" > "$work/run.json" 2> /dev/null; then
@@ -42,7 +43,7 @@ trap 'rm -rf "$work"' EXIT
         continue
       fi
       spec=$source
-      [ "$source" != torus ] || spec=torus:$n:1
+      [ "$n" = 0 ] || spec=$source:$n:1
       "$bench/mesh_quality" "$work/mesh.obj" "$spec" "$reference" 20000 > "$work/quality.json" 2> /dev/null || echo '{}' > "$work/quality.json"
       /usr/bin/python3 - "$name" "$method" "$work/run.json" "$work/quality.json" <<'PY'
 import json, sys
