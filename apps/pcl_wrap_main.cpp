@@ -188,6 +188,7 @@ parseOptions (int argc, char** argv)
   if (positional.size () != 2)
     usageError ("expected INPUT and OUTPUT");
   o.parameters.filtration = !o.complex_json.empty ();
+  o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];
   o.output = positional[1];
   if (o.parameters.region.shape != Region::Shape::everywhere &&

@@ -22,9 +22,8 @@
 #include "detail/stage_clock.h"
 #include "detail/wrap_filtration.h"
 
-#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 #include <tbb/task_group.h>
-#include <tbb/info.h>
 
 #include <algorithm>
 #include <cmath>
@@ -115,6 +114,10 @@ checkParameters (const WrapParameters& p)
     fail ("a region (local modification) needs a threshold (delta or radius_rel)");
 }
 
+WrapResult
+computeInCurrentArena (const std::vector<Point3>& points, const std::vector<double>& weights,
+                       const WrapParameters& parameters, const StageObserver& observer);
+
 } // namespace
 
 WrapResult
@@ -131,10 +134,22 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   if (!weights.empty () && weights.size () != points.size ())
     throw std::invalid_argument ("computeWrap: " + std::to_string (weights.size ()) + " weights for " +
                                  std::to_string (points.size ()) + " points");
-  std::unique_ptr<tbb::global_control> threads;
-  if (parameters.num_threads > 0)
-    threads = std::make_unique<tbb::global_control> (tbb::global_control::max_allowed_parallelism,
-                                                     parameters.num_threads);
+  if (parameters.num_threads == 0)
+    return computeInCurrentArena (points, weights, parameters, observer);
+  // A thread count of its own, for this call only: other TBB users in the process keep theirs.
+  tbb::task_arena arena (static_cast<int> (parameters.num_threads));
+  WrapResult result;
+  arena.execute ([&] { result = computeInCurrentArena (points, weights, parameters, observer); });
+  return result;
+}
+
+namespace
+{
+
+WrapResult
+computeInCurrentArena (const std::vector<Point3>& points, const std::vector<double>& weights,
+                       const WrapParameters& parameters, const StageObserver& observer)
+{
   WrapResult result;
   WrapStatistics& stats = result.statistics;
   StageClock clock (stats, observer);
@@ -280,5 +295,7 @@ computeWrap (const std::vector<Point3>& points, const std::vector<double>& weigh
   clock.stageDone ("boundary");
   return result;
 }
+
+} // namespace
 
 } // namespace pcl_wrap

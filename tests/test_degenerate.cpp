@@ -10,11 +10,14 @@
 #include "support/wrap_checks.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <limits>
 #include <random>
 #include <set>
+#include <thread>
 
 namespace pcl_wrap::test
 {
@@ -173,6 +176,29 @@ TEST (Degenerate, OutputDoesNotChangeFromRunToRunOrWithThreads)
       EXPECT_EQ (r.complex[k].in_x, reference.complex[k].in_x);
     }
   }
+}
+
+TEST (Degenerate, AThreadCountHoldsForItsCallOnly)
+{
+  // Large enough for the parallel insertion and the surface stage's concurrent flood.
+  const auto points = sphereSample (30000, 3, 0.01);
+  const int everywhere = tbb::this_task_arena::max_concurrency ();
+  const std::size_t limit = tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism);
+  WrapParameters parameters;
+  parameters.num_threads = 1;
+  std::vector<int> during;
+  const WrapResult one = computeWrap (points, parameters, [&] (const std::string&, double) {
+    during.push_back (tbb::this_task_arena::max_concurrency ());
+    EXPECT_EQ (tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism), limit);
+    int elsewhere = 0; // what another thread of the process may use meanwhile
+    std::thread ([&] { elsewhere = tbb::this_task_arena::max_concurrency (); }).join ();
+    EXPECT_EQ (elsewhere, everywhere);
+  });
+  ASSERT_FALSE (during.empty ());
+  for (int c : during)
+    EXPECT_EQ (c, 1);
+  parameters.num_threads = 0;
+  EXPECT_EQ (computeWrap (points, parameters).surface.triangles, one.surface.triangles);
 }
 
 TEST (Degenerate, HostileCoordinatesNeverCrash)

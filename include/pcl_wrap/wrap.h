@@ -45,7 +45,7 @@ public:
   const WrapParameters& getParameters () const { return parameters_; }
 
   /** \brief Keep the whole complex (Del S with classes and X) in getResult().
-    * \param[in] keep true to keep it (default), false to save memory */
+    * \param[in] keep true to keep it, false (the default) to save memory and time */
   void setKeepComplex (bool keep) { parameters_.keep_complex = keep; }
   /** \brief Worker threads for the parallel stages (0: all cores).
     * \param[in] num_threads the number of threads */

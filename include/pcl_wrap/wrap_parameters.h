@@ -69,11 +69,13 @@ struct Region
 struct WrapParameters
 {
   /** \brief Keep the whole complex (every Delaunay simplex with its class and whether it is in X)
-    * in the result. Costs memory proportional to the triangulation; the surface W is always kept. */
-  bool keep_complex = true;
+    * in the result. Off unless asked: it costs memory and time proportional to the triangulation
+    * (hundreds of MB at a million points); the surface is always kept. */
+  bool keep_complex = false;
 
-  /** \brief Worker threads for the parallel stages; 0 lets TBB choose (all cores). The result does
-    * not depend on it. */
+  /** \brief Threads for the parallel stages, in a TBB task arena of this size that lasts the
+    * call (other TBB users in the process keep their own); 0 runs in the caller's arena (by
+    * default all cores). The result does not depend on it. */
   unsigned num_threads = 0;
 
   /** \brief Every weight is multiplied by this before use. A weight is a squared radius: the

@@ -14,7 +14,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <tbb/scalable_allocator.h>
-#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -289,7 +289,7 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   const bool equal_weights = std::all_of (weights.begin (), weights.end (), [&] (double w) { return w == weights[0]; });
   const bool delaunay = equal_weights && spanSpace (positions.size (), point);
   const bool parallel = positions.size () >= PARALLEL_INSERTION_MIN_POINTS &&
-                        tbb::global_control::active_value (tbb::global_control::max_allowed_parallelism) > 1;
+                        tbb::this_task_arena::max_concurrency () > 1;
   Triangulation t = delaunay ? parallel ? triangulateWith<Delaunay<CGAL::Parallel_tag>> (positions, point)
                                         : triangulateWith<Delaunay<CGAL::Sequential_tag>> (positions, point)
                   : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted)

@@ -164,6 +164,8 @@ pinchEdges (const WrapResult& r)
 void
 expectWrapInvariants (const WrapResult& r)
 {
+  ASSERT_TRUE (r.statistics.points_used == 0 || !r.complex[0].vertices.empty ())
+      << "the invariants are about the complex: compute with keep_complex";
   const auto x = tuplesOfX (r);
   ASSERT_TRUE (closedUnderFaces (x));
   const Homology h = homology (x);

@@ -47,12 +47,23 @@ pinchEdges (const WrapResult& r);
 bool
 xMeetsSegment (const WrapResult& r, const std::vector<Point3>& points, const Point3& a, const Point3& b);
 
-/** Parameters for the paper's W as it is (Output::raw), which the invariant checks are about. */
+/** Parameters for the paper's W as it is (Output::raw), which the invariant checks are about,
+  * with the complex kept for them. */
 inline WrapParameters
 rawOutput ()
 {
   WrapParameters p;
   p.output = Output::raw;
+  p.keep_complex = true;
+  return p;
+}
+
+/** The default parameters with the complex kept. */
+inline WrapParameters
+keepingComplex ()
+{
+  WrapParameters p;
+  p.keep_complex = true;
   return p;
 }
 
