@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the built project into a fresh prefix, then configures, builds and runs the consumer
-# in examples/consumer (and builds examples/pipeline) against it with find_package(pcl_wrap): what a downstream user does.
+# in examples/consumer (and builds examples/pipeline) against it with find_package(pcl_wrap): what
+# a downstream user does. With STATIC, first builds the library alone as a static library (in
+# WORK_DIR/static) and installs that instead. Without STATIC, also runs the installed command-line
+# tool with no LD_LIBRARY_PATH: it finds the installed library by itself.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
@@ -8,7 +11,25 @@ function(run)
     message(FATAL_ERROR "failed: ${ARGN}\n${out}")
   endif()
 endfunction()
+if(STATIC)
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
+      -DPCL_WRAP_BUILD_APPS=OFF -DPCL_WRAP_BUILD_TESTS=OFF -DPCL_WRAP_BUILD_BENCH=OFF)
+  run(${CMAKE_COMMAND} --build ${WORK_DIR}/static -j2)
+  set(BUILD_DIR ${WORK_DIR}/static)
+endif()
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
+file(GLOB_RECURSE archives ${WORK_DIR}/prefix/libpcl_wrap.a)
+if(STATIC AND NOT archives)
+  message(FATAL_ERROR "no static library installed")
+endif()
+if(NOT STATIC)
+  file(WRITE ${WORK_DIR}/points.xyz "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n0.3 0.3 0.3\n")
+  run(${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH ${WORK_DIR}/prefix/bin/pcl_wrap ${WORK_DIR}/points.xyz
+      ${WORK_DIR}/points.ply --quiet)
+  if(NOT EXISTS ${WORK_DIR}/points.ply)
+    message(FATAL_ERROR "the installed pcl_wrap wrote no mesh")
+  endif()
+endif()
 if(EXISTS ${WORK_DIR}/prefix/include/pcl_wrap)
   file(GLOB_RECURSE headers ${WORK_DIR}/prefix/include/pcl_wrap/*)
   foreach(h ${headers})

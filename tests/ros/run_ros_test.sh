@@ -19,7 +19,6 @@ trap cleanup EXIT
 cmake --install "$build" --prefix "$work/prefix" > /dev/null
 export ROS_PACKAGE_PATH="$work/prefix/share:/usr/share"
 export CMAKE_PREFIX_PATH="$work/prefix${CMAKE_PREFIX_PATH:+:$CMAKE_PREFIX_PATH}"
-export LD_LIBRARY_PATH="$work/prefix/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export AMENT_PREFIX_PATH="$work/prefix${AMENT_PREFIX_PATH:+:$AMENT_PREFIX_PATH}"
 export ROS_HOSTNAME=127.0.0.1 ROS_LOG_DIR="$work/log" ROS_HOME="$work/home"
 port=$(( 20000 + RANDOM % 20000 ))

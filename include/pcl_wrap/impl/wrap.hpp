@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <pcl_wrap/export.h>
 #include <pcl_wrap/point_field.h>
 #include <pcl_wrap/wrap.h>
 
@@ -154,4 +155,4 @@ Wrap<PointInT>::performReconstruction (pcl::PointCloud<PointInT>& points, std::v
 
 } // namespace pcl_wrap
 
-#define PCL_INSTANTIATE_Wrap(T) template class PCL_EXPORTS pcl_wrap::Wrap<T>;
+#define PCL_INSTANTIATE_Wrap(T) template class PCL_WRAP_EXPORT pcl_wrap::Wrap<T>;
