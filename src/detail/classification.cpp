@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 #include "classification.h"
+#include "portable.h"
 
 #include "parallel_for_each.h"
 #include "power_predicates.h"
@@ -54,7 +55,7 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
       const auto s = static_cast<SimplexId> (id);
       const unsigned inside = predicates.insideOppositeFacets (complex.vertices (m, s), m);
       for (unsigned rest = inside; rest != 0; rest &= rest - 1)
-        __atomic_store_n (&attached[m - 1][complex.facet (m, s, __builtin_ctz (rest)).id], std::uint8_t (1), __ATOMIC_RELAXED);
+        relaxedStore (&attached[m - 1][complex.facet (m, s, lowestSetBit (rest)).id], std::uint8_t (1));
       c.lowest_successor[m][s] = static_cast<std::uint8_t> (inside);
     });
 
@@ -66,10 +67,9 @@ classify (const SimplicialComplex& complex, const PowerPredicates& predicates)
   const auto namePredecessor = [&] (Simplex mine) {
     const Simplex v = complex.face (mine.dim, mine.id, c.lowest_successor[mine.dim][mine.id]);
     Simplex* pred = &c.predecessor[v.dim][v.id];
-    Simplex seen;
-    __atomic_load (pred, &seen, __ATOMIC_RELAXED);
+    Simplex seen = relaxedLoad (pred);
     while (seen.id == NO_SIMPLEX || mine.dim < seen.dim || (mine.dim == seen.dim && mine.id < seen.id))
-      if (__atomic_compare_exchange (pred, &seen, &mine, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+      if (relaxedCompareExchange (pred, seen, mine))
       {
         if (seen.id != NO_SIMPLEX)
           extra.fetch_add (1, std::memory_order_relaxed); // displaced a later one

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include <sys/mman.h>
+#include "portable.h"
 
 #include <cstddef>
 #include <cstdlib>
@@ -43,7 +43,7 @@ struct OnHugePages : std::allocator<T>
     void* p = std::aligned_alloc (HUGE_PAGE, (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE);
     if (p == nullptr)
       throw std::bad_alloc ();
-    madvise (p, bytes, MADV_HUGEPAGE); // advice only: refused, the array is on small pages
+    adviseHugePages (p, bytes); // refused, the array is on small pages
     return static_cast<T*> (p);
   }
   void deallocate (T* p, std::size_t n)

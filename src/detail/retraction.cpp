@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 #include "retraction.h"
+#include "portable.h"
 
 #include "parallel_for_each.h"
 
@@ -53,7 +54,7 @@ Retraction::countCofaces ()
       const auto s = static_cast<SimplexId> (id);
       if (alive_[m][s])
         for (int i = 0; i <= m; ++i)
-          __atomic_fetch_add (&counts_[m - 1][complex_.facet (m, s, i).id], 1u, __ATOMIC_RELAXED);
+          relaxedFetchAdd (&counts_[m - 1][complex_.facet (m, s, i).id], 1u);
     });
 }
 
@@ -74,7 +75,7 @@ template <bool CONCURRENT>
 void
 Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below, std::vector<Simplex>& work)
 {
-  __atomic_store_n (&alive_[xi.dim][xi.id], std::uint8_t (0), __ATOMIC_RELAXED);
+  relaxedStore (&alive_[xi.dim][xi.id], std::uint8_t (0));
   if (stamp_ != 0)
     stamps_[xi.dim][xi.id] = stamp_;
   if (in_trial_)
@@ -87,7 +88,7 @@ Retraction::remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kep
     const unsigned facet = removed_mask & ~(drop & -drop);
     const Simplex f = complex_.face (tau.dim, tau.id, facet);
     if (CONCURRENT)
-      __atomic_fetch_sub (&counts_[f.dim][f.id], 1u, __ATOMIC_RELAXED);
+      relaxedFetchSub (&counts_[f.dim][f.id], 1u);
     else
       --counts_[f.dim][f.id];
     if ((facet & kept_below) != kept_below)
@@ -133,8 +134,7 @@ Retraction::retractInParallel ()
                                continue;
                              const Simplex tau = classification_.predecessor[v.dim][v.id];
                              std::uint8_t alive = 1;
-                             if (!__atomic_compare_exchange_n (&alive_[tau.dim][tau.id], &alive, std::uint8_t (0), false,
-                                                               __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+                             if (!relaxedCompareExchange (&alive_[tau.dim][tau.id], alive, std::uint8_t (0)))
                                continue; // another thread collapses this pair
                              collapse<true> (tau, work);
                              ++done;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "classification.h"
+#include "portable.h"
 #include "filled_in_parallel.h"
 #include "simplicial_complex.h"
 
@@ -61,11 +62,11 @@ public:
   std::uint32_t removalStamp (Simplex s) const { return stamps_[s.dim].empty () ? 0 : stamps_[s.dim][s.id]; }
 
   // Relaxed atomic loads (plain loads on x86): the first retraction runs on several threads.
-  bool inY (Simplex s) const { return __atomic_load_n (&alive_[s.dim][s.id], __ATOMIC_RELAXED) != 0; }
+  bool inY (Simplex s) const { return relaxedLoad (&alive_[s.dim][s.id]) != 0; }
   /** \brief Number of cofaces of \a s of dimension s.dim + 1 still in Y. */
   std::uint32_t cofacesInY (Simplex s) const
   {
-    return s.dim < 3 ? __atomic_load_n (&counts_[s.dim][s.id], __ATOMIC_RELAXED) : 0;
+    return s.dim < 3 ? relaxedLoad (&counts_[s.dim][s.id]) : 0;
   }
 
 private:

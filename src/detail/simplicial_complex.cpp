@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 #include "simplicial_complex.h"
+#include "portable.h"
 
 #include "parallel_for_each.h"
 
@@ -33,7 +34,7 @@ groupsByLowestVertex (int d, std::uint32_t num_vertices, const FilledInParallel<
     if (t > 0 && lowest (t) < lowest (t - 1))
       grouped.store (false, std::memory_order_relaxed);
     else if (t == 0 || lowest (t) != lowest (t - 1))
-      __atomic_store_n (&group[lowest (t)], t, __ATOMIC_RELAXED); // racing only when not grouped
+      relaxedStore (&group[lowest (t)], t); // racing only when not grouped
   });
   if (!grouped.load ())
     return {};
@@ -241,7 +242,7 @@ SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
         {
           cofaces_[2][f] = 1;
           for (int j = 0; j < 3; ++j) // several hull triangles may mark an edge: relaxed stores
-            __atomic_store_n (&on_hull[triangle_edges_[3 * std::size_t (f) + j]], std::uint8_t (1), __ATOMIC_RELAXED);
+            relaxedStore (&on_hull[triangle_edges_[3 * std::size_t (f) + j]], std::uint8_t (1));
           continue;
         }
         cofaces_[2][f] = 2;

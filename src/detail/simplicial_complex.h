@@ -3,6 +3,7 @@
 #pragma once
 
 #include "filled_in_parallel.h"
+#include "portable.h"
 
 #include <array>
 #include <cstdint>
@@ -101,15 +102,15 @@ SimplicialComplex::face (int k, SimplexId s, unsigned mask) const
   if (n == k + 1)
     return {k, s};
   if (n == 1)
-    return {0, vertex (k, s, __builtin_ctz (mask))};
+    return {0, vertex (k, s, lowestSetBit (mask))};
   if (k == 3)
   {
     if (n == 3)
-      return {2, tet_triangles_[4 * std::size_t (s) + __builtin_ctz (~mask & 15u)]};
+      return {2, tet_triangles_[4 * std::size_t (s) + lowestSetBit (~mask & 15u)]};
     return {1, tet_edges_[6 * std::size_t (s) + EDGE_SLOT[mask]]};
   }
   // k == 2, n == 2
-  return {1, triangle_edges_[3 * std::size_t (s) + __builtin_ctz (~mask & 7u)]};
+  return {1, triangle_edges_[3 * std::size_t (s) + lowestSetBit (~mask & 7u)]};
 }
 
 inline Simplex

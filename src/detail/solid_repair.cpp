@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 #include "solid_repair.h"
+#include "portable.h"
 
 #include "parallel_for_each.h"
 #include "regular_triangulation.h"
@@ -101,9 +102,9 @@ public:
       for (int i = 0; i < 4; ++i)
       {
         std::uint32_t* at = &tet_of_vertex_[complex.vertex (3, t, i)];
-        std::uint32_t seen = __atomic_load_n (at, __ATOMIC_RELAXED);
+        std::uint32_t seen = relaxedLoad (at);
         while ((seen == NONE || seen < t) &&
-               !__atomic_compare_exchange_n (at, &seen, t, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+               !relaxedCompareExchange (at, seen, t))
         {
         }
       }
@@ -261,7 +262,7 @@ private:
     FilledInParallel<std::uint32_t> root (n);
     parallelForEach (n, [&] (std::size_t t) { root[t] = static_cast<std::uint32_t> (t); });
     const auto find = [&] (std::uint32_t a) {
-      for (std::uint32_t up; (up = __atomic_load_n (&root[a], __ATOMIC_RELAXED)) != a;)
+      for (std::uint32_t up; (up = relaxedLoad (&root[a])) != a;)
         a = up;
       return a;
     };
@@ -283,7 +284,7 @@ private:
           if (a > b)
             std::swap (a, b);
           std::uint32_t expected = b; // b is still a root: hang it under the lower a
-          if (__atomic_compare_exchange_n (&root[b], &expected, a, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+          if (relaxedCompareExchange (&root[b], expected, a))
             break;
         }
       }
