@@ -134,7 +134,7 @@ alphaWrap (const std::vector<Point3>& points)
   // The values of CGAL's own example: alpha = diagonal / 20, offset = diagonal / 600; and a
   // finer alpha = 10 x the spacing, closer to the points' detail, whichever is smaller.
   const double diag = boundingBoxDiagonal (points);
-  const double alpha = std::min (diag / 20.0, 10.0 * pcl_wrap::medianSpacing (points)), offset = diag / 600.0;
+  const double alpha = std::min (diag / 20.0, 10.0 * medianSpacing (points)), offset = diag / 600.0;
   const auto p = cgalPoints (points);
   CGAL::Surface_mesh<K::Point_3> mesh;
   CGAL::alpha_wrap_3 (p, alpha, offset, mesh);
@@ -217,7 +217,7 @@ fromPcl (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<pcl::Ver
 PeerOutput
 concaveHull (const std::vector<Point3>& points)
 {
-  const double alpha = 2.0 * pcl_wrap::medianSpacing (points);
+  const double alpha = 2.0 * medianSpacing (points);
   pcl::ConcaveHull<pcl::PointXYZ> hull;
   hull.setInputCloud (pclCloud (points));
   hull.setAlpha (alpha);
@@ -248,7 +248,7 @@ greedyProjection (const std::vector<Point3>& points)
   pcl::concatenateFields (*cloud, normals, *with_normals);
   const double normal_seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
 
-  const double radius = 5.0 * pcl_wrap::medianSpacing (points);
+  const double radius = 5.0 * medianSpacing (points);
   pcl::GreedyProjectionTriangulation<pcl::PointNormal> gp3;
   auto tree2 = pcl::make_shared<pcl::search::KdTree<pcl::PointNormal>> ();
   tree2->setInputCloud (with_normals);
@@ -282,6 +282,27 @@ peers ()
       {"cgal_alpha_wrap", alphaWrap},          {"cgal_alpha_shape", alphaShape},
       {"pcl_concave_hull", concaveHull},       {"pcl_greedy_projection", greedyProjection}};
   return all;
+}
+
+double
+medianSpacing (const std::vector<Point3>& points)
+{
+  // As a PCL user sets these methods up: a k-d tree on the cloud, two neighbours per point.
+  if (points.size () < 2)
+    return 0.0;
+  const auto cloud = pclCloud (points);
+  pcl::search::KdTree<pcl::PointXYZ> tree;
+  tree.setInputCloud (cloud);
+  std::vector<double> nearest;
+  pcl::Indices neighbours (2);
+  std::vector<float> squared (2);
+  for (const auto& q : *cloud)
+    if (tree.nearestKSearch (q, 2, neighbours, squared) == 2)
+      nearest.push_back (std::sqrt (double (squared[1])));
+  if (nearest.empty ())
+    return 0.0;
+  std::nth_element (nearest.begin (), nearest.begin () + nearest.size () / 2, nearest.end ());
+  return nearest[nearest.size () / 2];
 }
 
 } // namespace pcl_wrap::bench

@@ -34,8 +34,9 @@ using Peer = std::function<PeerOutput (const std::vector<Point3>&)>;
 const std::vector<std::pair<std::string, Peer>>&
 peers ();
 
-/** The median distance from a point to its nearest neighbour: the scale the peers' parameters
-  * are set from. */
+/** The median distance from a point to its nearest neighbour, through PCL's k-d tree as a user
+  * of these methods would compute it: the scale the peers' parameters are set from, inside
+  * their timing. */
 double
 medianSpacing (const std::vector<Point3>& points);
 

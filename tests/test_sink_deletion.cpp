@@ -11,7 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 
 namespace pcl_wrap::test
 {
@@ -39,6 +42,47 @@ TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
   EXPECT_EQ (basic.statistics.sinks_deleted, 0u);
   EXPECT_TRUE (std::isinf (basic.statistics.delta));
   EXPECT_EQ (homology (tuplesOfX (basic)).betti1, 0u);
+}
+
+TEST (SinkDeletion, SpacingIsTheMedianNearestNeighbourDistance)
+{
+  // Distinct finite points, jittered; a duplicate and a NaN point are not points of their own.
+  std::mt19937 random (5);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  std::vector<Point3> points;
+  for (int i = 0; i < 400; ++i)
+    points.push_back ({u (random), u (random), 0.3 * u (random)});
+  std::vector<double> nearest;
+  for (const Point3& p : points)
+  {
+    double best = std::numeric_limits<double>::infinity ();
+    for (const Point3& q : points)
+      if (&p != &q)
+        best = std::min (best, std::hypot (p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+    nearest.push_back (best);
+  }
+  std::nth_element (nearest.begin (), nearest.begin () + nearest.size () / 2, nearest.end ());
+  points.push_back (points[7]);
+  points.push_back ({std::numeric_limits<double>::quiet_NaN (), 0, 0});
+  EXPECT_DOUBLE_EQ (medianSpacing (points), nearest[nearest.size () / 2]);
+
+  WrapParameters relative;
+  relative.radius_rel = 4;
+  EXPECT_DOUBLE_EQ (computeWrap (points, relative).statistics.spacing, medianSpacing (points));
+}
+
+TEST (SinkDeletion, SpacingHoldsFarFromTheOrigin)
+{
+  // A grid of step 0.01 at survey coordinates, where single precision cannot tell the points apart.
+  std::vector<Point3> points;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j)
+      for (int k = 0; k < 3; ++k)
+        points.push_back ({4.5e5 + 0.01 * i, 5.2e6 + 0.01 * j, 300 + 0.01 * k});
+  EXPECT_NEAR (medianSpacing (points), 0.01, 1e-8);
+  WrapParameters relative;
+  relative.radius_rel = 4;
+  EXPECT_NEAR (computeWrap (points, relative).statistics.spacing, 0.01, 1e-8);
 }
 
 TEST (SinkDeletion, GlobalModeByCountOrThresholdAndTheRelativeRadius)

@@ -42,8 +42,11 @@ computeWrap (const std::vector<Point3>& points,
              const WrapParameters& parameters = WrapParameters (),
              const StageObserver& observer = StageObserver ());
 
-/** \brief The median distance from a point to its nearest neighbour (PCL's FLANN k-d tree): the
-  * spacing that WrapParameters::radius_rel is relative to. 0 for fewer than two points. */
+/** \brief The median distance from a point to its nearest neighbour, from the Delaunay
+  * triangulation of the distinct finite points, in double precision: the spacing that
+  * WrapParameters::radius_rel is relative to (with weights, the construction takes the nearest
+  * neighbour among the points sharing a simplex of the regular triangulation). 0 for fewer than
+  * two distinct points. */
 double
 medianSpacing (const std::vector<Point3>& points);
 

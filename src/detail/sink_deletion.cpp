@@ -4,8 +4,7 @@
 
 #include "front_deletion.h"
 
-#include <pcl/kdtree/kdtree_flann.h>
-#include <pcl/point_types.h>
+#include "spacing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +30,8 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
     orderSinks (complex, classification, positions, weights, own);
   const WrapFiltration& order = ordered ? *ordered : own;
   recordSinks (order, stats);
-  stats.spacing = pcl_wrap::medianSpacing (positions);
+  stats.spacing = complex.size (1) == 0 ? 0.0
+                                         : medianNearestNeighbourDistance (complex.vertices (1, 0), complex.size (1), 1, positions);
   stats.delta = parameters.radius_rel > 0 ? std::pow (parameters.radius_rel * stats.spacing, 2) : parameters.delta;
 
   if (parameters.deletion == SinkDeletion::global || parameters.sinks > 0)
@@ -56,30 +56,3 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
 }
 
 } // namespace pcl_wrap::detail
-
-namespace pcl_wrap
-{
-
-double
-medianSpacing (const std::vector<Point3>& positions)
-{
-  if (positions.size () < 2)
-    return 0.0;
-  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
-  for (const Point3& p : positions)
-    cloud->push_back (pcl::PointXYZ (float (p[0]), float (p[1]), float (p[2])));
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud (cloud);
-  std::vector<double> nearest;
-  pcl::Indices neighbours (2);
-  std::vector<float> squared (2);
-  for (const auto& q : *cloud)
-    if (tree.nearestKSearch (q, 2, neighbours, squared) == 2)
-      nearest.push_back (std::sqrt (double (squared[1])));
-  if (nearest.empty ())
-    return 0.0;
-  std::nth_element (nearest.begin (), nearest.begin () + nearest.size () / 2, nearest.end ());
-  return nearest[nearest.size () / 2];
-}
-
-} // namespace pcl_wrap
