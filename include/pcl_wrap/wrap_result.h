@@ -120,9 +120,9 @@ struct WrapStatistics
   std::size_t sinks = 0;              ///< sinks other than omega
   std::size_t sinks_deleted = 0;
   std::size_t sinks_enclosed = 0;     ///< front: larger than delta, principal, basin kept inside
-  /** \brief Larger than delta, present, never principal. Global mode: the theory says none.
-    * Front mode: none on the whole surface either; with a region, the sinks outside it stay
-    * whether principal or not. */
+  /** \brief Larger than delta, still in X and never principal. Global mode: the theory says
+    * none. Front mode: the sinks below an enclosed one (its kept basin covers them, so they are
+    * never uncovered), and with a region the sinks outside it. */
   std::size_t sinks_not_principal = 0;
 
   /** \brief With WrapParameters::manifold: the edges and vertices of W split, and the sheet
