@@ -41,7 +41,7 @@ printUsage (std::ostream& out)
          "  --radius-rel K        the same with R = K x the median nearest-neighbour distance\n"
          "  --mode front|global   front (default): only sinks whose basin reaches the surface, so no\n"
          "                        cavity is carved; global: every sink above the threshold\n"
-         "  --sinks J             global: delete the J largest sinks\n"
+         "  --sinks J             delete the J largest sinks (a global deletion)\n"
          "  --region sphere:x,y,z,r | box:x0,y0,z0,x1,y1,z1\n"
          "                        local modification: front deletion with the threshold above starts\n"
          "                        only from the surface inside this region\n"
@@ -64,8 +64,9 @@ printUsage (std::ostream& out)
 
 struct Options
 {
-  std::string input, output, complex_json, stats_json;
+  std::string input, output, complex_json, stats_json, weight_field;
   bool stats = false, quiet = false;
+  int thresholds = 0; // --delta, --radius, --radius-rel and --sinks given: at most one
   WrapParameters parameters;
 };
 
@@ -130,10 +131,10 @@ parseOptions (int argc, char** argv)
       const double x = std::strtod (v.c_str (), &end);
       if (v.empty () || *end != '\0' || !std::isfinite (x) || (arg != "--delta" && x <= 0))
         usageError (arg + " takes a finite number" + (arg == "--delta" ? "" : " > 0"));
-      if (arg == "--radius-rel")
-        o.parameters.radius_rel = x;
-      else
-        o.parameters.delta = arg == "--delta" ? x : x * x;
+      o.parameters.threshold = arg == "--radius-rel" ? Threshold::relativeRadius (x)
+                             : arg == "--radius"     ? Threshold::radius (x)
+                                                     : Threshold::size (x);
+      ++o.thresholds;
     }
     else if (arg == "--mode")
     {
@@ -149,7 +150,8 @@ parseOptions (int argc, char** argv)
       const long long j = std::strtoll (v.c_str (), &end, 10);
       if (v.empty () || *end != '\0' || j < 1)
         usageError ("--sinks takes a whole number >= 1");
-      o.parameters.sinks = static_cast<std::size_t> (j);
+      o.parameters.threshold = Threshold::largest (static_cast<std::size_t> (j));
+      ++o.thresholds;
     }
     else if (arg == "--region")
     {
@@ -161,7 +163,7 @@ parseOptions (int argc, char** argv)
     else if (arg == "--manifold")
       o.parameters.manifold = true;
     else if (arg == "--weight-field")
-      o.parameters.weight_field = value ();
+      o.weight_field = value ();
     else if (arg == "--weight-scale")
     {
       const std::string v = value ();
@@ -187,12 +189,15 @@ parseOptions (int argc, char** argv)
   }
   if (positional.size () != 2)
     usageError ("expected INPUT and OUTPUT");
+  if (o.thresholds > 1)
+    usageError ("--delta, --radius, --radius-rel and --sinks each set the threshold: give one");
   o.parameters.filtration = !o.complex_json.empty ();
   o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];
   o.output = positional[1];
   if (o.parameters.region.shape != Region::Shape::everywhere &&
-      (o.parameters.deletion != SinkDeletion::front || o.parameters.sinks > 0 || !o.parameters.deletesSinks ()))
+      (o.parameters.deletion != SinkDeletion::front || o.parameters.threshold.kind () == Threshold::Kind::largest ||
+       !o.parameters.threshold.deletes ()))
     usageError ("--region needs a threshold (--delta, --radius or --radius-rel) and front mode");
   if (!apps::isMeshFormat (o.output))
     usageError (o.output + ": unknown output format (expected .ply, .obj or .vtk)");
@@ -208,7 +213,7 @@ main (int argc, char** argv)
   const bool progress = !o.quiet && ::isatty (STDERR_FILENO);
   try
   {
-    const apps::PointFile file = apps::readPointFile (o.input, o.parameters.weight_field);
+    const apps::PointFile file = apps::readPointFile (o.input, o.weight_field);
     const std::vector<Point3>& points = file.points;
     if (progress)
       std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input << '\n';

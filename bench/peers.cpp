@@ -110,7 +110,7 @@ PeerOutput
 wrapFront (const std::vector<Point3>& points)
 {
   WrapParameters parameters;
-  parameters.radius_rel = 4;
+  parameters.threshold = Threshold::relativeRadius (4);
   return wrapWith (points, parameters, "front deletion, radius-rel 4");
 }
 

@@ -91,10 +91,13 @@ void
 checkParameters (const WrapParameters& p)
 {
   const auto fail = [] (const std::string& what) { throw std::invalid_argument ("computeWrap: " + what); };
-  if (std::isnan (p.delta))
-    fail ("delta is NaN");
-  if (!(p.radius_rel >= 0) || !std::isfinite (p.radius_rel))
-    fail ("radius_rel must be finite and >= 0");
+  const Threshold& t = p.threshold;
+  if (t.kind () == Threshold::Kind::size && std::isnan (t.value ()))
+    fail ("the threshold size is NaN");
+  if (t.kind () == Threshold::Kind::relative_radius && !(t.value () > 0 && std::isfinite (t.value ())))
+    fail ("a relative radius must be finite and > 0");
+  if (t.kind () == Threshold::Kind::largest && t.count () == 0)
+    fail ("the largest sinks: a count >= 1");
   if (!std::isfinite (p.weight_scale))
     fail ("weight_scale must be finite");
   const Region& r = p.region;
@@ -108,10 +111,10 @@ checkParameters (const WrapParameters& p)
   if (r.shape == Region::Shape::box && !(r.values[0] <= r.values[3] && r.values[1] <= r.values[4] &&
                                          r.values[2] <= r.values[5]))
     fail ("region box corners must be lowest then highest");
-  if (p.deletion != SinkDeletion::front || p.sinks > 0)
+  if (p.deletion != SinkDeletion::front || t.kind () == Threshold::Kind::largest)
     fail ("a region (local modification) works with front deletion only");
-  if (!p.deletesSinks ())
-    fail ("a region (local modification) needs a threshold (delta or radius_rel)");
+  if (!t.deletes ())
+    fail ("a region (local modification) needs a size threshold");
 }
 
 WrapResult
@@ -233,7 +236,7 @@ computeInCurrentArena (const std::vector<Point3>& points, const std::vector<doub
     recordSinks (*filtration, stats);
     clock.stageDone ("filtration");
   }
-  if (parameters.deletesSinks ())
+  if (parameters.threshold.deletes ())
   {
     deleteSinks (complex, classification, vertex_positions, vertex_weights, parameters, filtration.get (), x, stats);
     clock.stageDone ("deletion");

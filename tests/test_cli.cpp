@@ -290,7 +290,8 @@ TEST_F (Cli, SinkDeletionOptions)
                                 "--delta 1 --region sphere:0,0,0", "--delta 1 --region box:1,0,0,0,1,1",
                                 "--delta 1 --region cube:0,0,0,1", "--delta 1 --region sphere:0,0,nan,1",
                                 "--delta 1 --region sphere:0,0,0,1,", "--region sphere:0,0,0,1",
-                                "--delta 1 --mode global --region sphere:0,0,0,1"})
+                                "--delta 1 --mode global --region sphere:0,0,0,1", "--delta 1 --radius-rel 4",
+                                "--sinks 3 --radius 0.45"})
     EXPECT_EQ (runCli (DIR + "torus1000.xyz " + DIR + "opened.ply " + bad).status, 2) << bad;
 }
 

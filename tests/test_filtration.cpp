@@ -216,7 +216,7 @@ TEST (WrapFiltration, PublicSurfacesEqualGlobalDeletionFromScratch)
       SCOPED_TRACE ("delta " + std::to_string (delta));
       WrapParameters global = rawOutput ();
       global.deletion = SinkDeletion::global;
-      global.delta = delta;
+      global.threshold = Threshold::size (delta);
       EXPECT_EQ (canonical (r.filtration.surface (delta)), canonical (computeWrap (points, global).surface));
       const auto size = r.filtration.xSize (delta);
       for (int k = 0; k <= 3; ++k)

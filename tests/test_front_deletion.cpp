@@ -217,7 +217,7 @@ TEST (FrontDeletion, ARegionOpensOnlyTheTunnelItHolds)
     const WrapResult basic = computeWrap (points, rawOutput ());
 
     WrapParameters parameters = rawOutput ();
-    parameters.delta = 0.2; // between the tubes' sinks (< 0.4^2) and the holes' (about 0.6^2)
+    parameters.threshold = Threshold::size (0.2); // between the tubes' sinks (< 0.4^2) and the holes' (about 0.6^2)
     const WrapResult both = computeWrap (points, parameters);
     const SurfaceReport s = describeSurface ({both.surface.triangles.begin (), both.surface.triangles.end ()});
     EXPECT_TRUE (s.closed_manifold);
@@ -253,7 +253,7 @@ TEST (FrontDeletion, RegionParametersAreChecked)
   WrapParameters parameters = rawOutput ();
   parameters.region = Region::sphere (0, 0, 0, 1);
   EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "no threshold";
-  parameters.delta = 0.2;
+  parameters.threshold = Threshold::size (0.2);
   parameters.deletion = SinkDeletion::global;
   EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument) << "global mode";
   parameters.deletion = SinkDeletion::front;

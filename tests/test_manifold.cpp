@@ -121,7 +121,7 @@ TEST (Manifold, DegenerateFamilies)
 TEST (Manifold, AfterSinkDeletion)
 {
   WrapParameters deletion = rawOutput ();
-  deletion.radius_rel = 3;
+  deletion.threshold = Threshold::relativeRadius (3);
   for (unsigned seed = 1; seed <= 3; ++seed)
   {
     SCOPED_TRACE ("seed " + std::to_string (seed));

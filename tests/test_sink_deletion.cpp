@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 namespace pcl_wrap::test
 {
@@ -25,7 +26,7 @@ TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
 {
   const auto points = torusSample (1000, 2);
   WrapParameters parameters = rawOutput ();
-  parameters.delta = 0.2; // between the tube's sinks (0.4^2) and the hole's (0.6^2)
+  parameters.threshold = Threshold::size (0.2); // between the tube's sinks (0.4^2) and the hole's (0.6^2)
   const WrapResult r = computeWrap (points, parameters);
   const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
   EXPECT_TRUE (s.closed_manifold);
@@ -42,6 +43,25 @@ TEST (SinkDeletion, FrontModeOpensTheTorusTunnel)
   EXPECT_EQ (basic.statistics.sinks_deleted, 0u);
   EXPECT_TRUE (std::isinf (basic.statistics.delta));
   EXPECT_EQ (homology (tuplesOfX (basic)).betti1, 0u);
+}
+
+TEST (SinkDeletion, OneThresholdAtATime)
+{
+  const auto points = torusSample (1000, 2);
+  WrapParameters parameters = rawOutput ();
+  EXPECT_FALSE (parameters.threshold.deletes ()) << "the basic wrap by default";
+  parameters.threshold = Threshold::relativeRadius (4);
+  const WrapResult relative = computeWrap (points, parameters);
+  EXPECT_GT (relative.statistics.sinks_deleted, 0u);
+  parameters.threshold = Threshold::size (std::numeric_limits<double>::infinity ()); // replaces it
+  EXPECT_FALSE (parameters.threshold.deletes ());
+  EXPECT_EQ (computeWrap (points, parameters).surface.triangles, computeWrap (points, rawOutput ()).surface.triangles);
+  for (const Threshold bad : {Threshold::relativeRadius (0), Threshold::relativeRadius (-1), Threshold::largest (0),
+                              Threshold::size (std::numeric_limits<double>::quiet_NaN ())})
+  {
+    parameters.threshold = bad;
+    EXPECT_THROW (computeWrap (points, parameters), std::invalid_argument);
+  }
 }
 
 TEST (SinkDeletion, SpacingIsTheMedianNearestNeighbourDistance)
@@ -67,7 +87,7 @@ TEST (SinkDeletion, SpacingIsTheMedianNearestNeighbourDistance)
   EXPECT_DOUBLE_EQ (medianSpacing (points), nearest[nearest.size () / 2]);
 
   WrapParameters relative;
-  relative.radius_rel = 4;
+  relative.threshold = Threshold::relativeRadius (4);
   EXPECT_DOUBLE_EQ (computeWrap (points, relative).statistics.spacing, medianSpacing (points));
 }
 
@@ -81,7 +101,7 @@ TEST (SinkDeletion, SpacingHoldsFarFromTheOrigin)
         points.push_back ({4.5e5 + 0.01 * i, 5.2e6 + 0.01 * j, 300 + 0.01 * k});
   EXPECT_NEAR (medianSpacing (points), 0.01, 1e-8);
   WrapParameters relative;
-  relative.radius_rel = 4;
+  relative.threshold = Threshold::relativeRadius (4);
   EXPECT_NEAR (computeWrap (points, relative).statistics.spacing, 0.01, 1e-8);
 }
 
@@ -89,7 +109,7 @@ TEST (SinkDeletion, GlobalModeByCountOrThresholdAndTheRelativeRadius)
 {
   const auto points = torusSample (1000, 2);
   WrapParameters three = rawOutput ();
-  three.sinks = 3;
+  three.threshold = Threshold::largest (3);
   const WrapResult r = computeWrap (points, three);
   EXPECT_EQ (r.statistics.sinks_deleted + r.statistics.sinks_not_principal, 3u);
   const Homology h = homology (tuplesOfX (r));
@@ -98,7 +118,7 @@ TEST (SinkDeletion, GlobalModeByCountOrThresholdAndTheRelativeRadius)
 
   WrapParameters relative = rawOutput ();
   relative.deletion = SinkDeletion::global;
-  relative.radius_rel = 4;
+  relative.threshold = Threshold::relativeRadius (4);
   const WrapResult g = computeWrap (points, relative);
   EXPECT_DOUBLE_EQ (g.statistics.delta, std::pow (4 * g.statistics.spacing, 2));
   EXPECT_GT (g.statistics.sinks_deleted, r.statistics.sinks_deleted);

@@ -25,21 +25,29 @@ pcl_wrap::WrapParameters
 readParameters (const ros::NodeHandle& private_nh)
 {
   pcl_wrap::WrapParameters p;
-  private_nh.param ("delta", p.delta, p.delta);
-  double radius = 0.0;
-  if (private_nh.getParam ("radius", radius))
-    p.delta = radius * radius;
-  private_nh.param ("radius_rel", p.radius_rel, p.radius_rel);
+  // One threshold: ~delta, ~radius, ~radius_rel or ~sinks, not two of them.
+  int thresholds = 0;
+  double value = 0.0;
+  if (private_nh.getParam ("delta", value) && ++thresholds)
+    p.threshold = pcl_wrap::Threshold::size (value);
+  if (private_nh.getParam ("radius", value) && ++thresholds)
+    p.threshold = pcl_wrap::Threshold::radius (value);
+  if (private_nh.getParam ("radius_rel", value) && ++thresholds)
+    p.threshold = pcl_wrap::Threshold::relativeRadius (value);
   std::string mode = p.deletion == pcl_wrap::SinkDeletion::front ? "front" : "global";
   private_nh.param ("mode", mode, mode);
   if (mode != "front" && mode != "global")
     throw std::invalid_argument ("~mode must be front or global, not '" + mode + "'");
   p.deletion = mode == "front" ? pcl_wrap::SinkDeletion::front : pcl_wrap::SinkDeletion::global;
-  int sinks = static_cast<int> (p.sinks);
-  private_nh.param ("sinks", sinks, sinks);
-  if (sinks < 0)
-    throw std::invalid_argument ("~sinks must be >= 0");
-  p.sinks = static_cast<std::size_t> (sinks);
+  int sinks = 0;
+  if (private_nh.getParam ("sinks", sinks) && ++thresholds)
+  {
+    if (sinks < 1)
+      throw std::invalid_argument ("~sinks must be >= 1");
+    p.threshold = pcl_wrap::Threshold::largest (static_cast<std::size_t> (sinks));
+  }
+  if (thresholds > 1)
+    throw std::invalid_argument ("~delta, ~radius, ~radius_rel and ~sinks each set the threshold: give one");
   std::vector<double> region;
   if (private_nh.getParam ("region", region))
   {
@@ -59,14 +67,13 @@ readParameters (const ros::NodeHandle& private_nh)
   int threads = static_cast<int> (p.num_threads);
   private_nh.param ("threads", threads, threads);
   p.num_threads = static_cast<unsigned> (std::max (threads, 0));
-  private_nh.param ("weight_field", p.weight_field, p.weight_field);
   private_nh.param ("weight_scale", p.weight_scale, p.weight_scale);
   p.keep_complex = false; // the node publishes W only
   return p;
 }
 
 WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private_nh)
-  : parameters_ (readParameters (private_nh))
+  : parameters_ (readParameters (private_nh)), weight_field_ (private_nh.param<std::string> ("weight_field", ""))
   , mesh_publisher_ (nh.advertise<pcl_msgs::PolygonMesh> ("mesh", 1))
   , marker_publisher_ (nh.advertise<visualization_msgs::Marker> ("marker", 1))
   , subscriber_ (nh.subscribe ("cloud", 1, &WrapPublisher::onCloud, this))
@@ -113,8 +120,7 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   try
   {
     // Checked against the message's own layout: a malformed message is an error, not a crash.
-    wrap.setWeights (parameters_.weight_field.empty () ? std::vector<double> ()
-                                                       : pcl_wrap::readFieldValues (input, parameters_.weight_field));
+    wrap.setWeights (weight_field_.empty () ? std::vector<double> () : pcl_wrap::readFieldValues (input, weight_field_));
   }
   catch (const std::exception& e)
   {

@@ -10,9 +10,9 @@
 namespace pcl_wrap_ros
 {
 
-/** \brief Reads the wrap's parameters from \a private_nh (~delta, ~radius, ~radius_rel, ~mode,
-  * ~sinks, ~region, ~manifold, ~threads, ~weight_field, ~weight_scale), each defaulting to
-  * pcl_wrap::WrapParameters' own default. */
+/** \brief Reads the wrap's parameters from \a private_nh (one of ~delta, ~radius, ~radius_rel and
+  * ~sinks; ~mode, ~region, ~output, ~manifold, ~threads, ~weight_scale), each defaulting to
+  * pcl_wrap::WrapParameters' own default. The node reads ~weight_field itself. */
 pcl_wrap::WrapParameters
 readParameters (const ros::NodeHandle& private_nh);
 
@@ -29,6 +29,7 @@ private:
   void onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg);
 
   pcl_wrap::WrapParameters parameters_;
+  std::string weight_field_; ///< the points' field holding the weights; empty: none
   ros::Publisher mesh_publisher_;
   ros::Publisher marker_publisher_;
   ros::Subscriber subscriber_;

@@ -51,22 +51,26 @@ public:
     * \param[in] num_threads the number of threads */
   void setNumberOfThreads (unsigned num_threads) { parameters_.num_threads = num_threads; }
 
+  /** \brief Wrap tighter: which sinks to delete (default none: the basic wrap). Each of the
+    * setters below sets it, replacing what was set before.
+    * \param[in] threshold the threshold */
+  void setThreshold (const Threshold& threshold) { parameters_.threshold = threshold; }
   /** \brief Wrap tighter: delete sinks (empty spheres) of squared radius larger than \a delta.
-    * \param[in] delta the threshold; +inf (default) gives the basic wrap */
-  void setDelta (double delta) { parameters_.delta = delta; }
+    * \param[in] delta the threshold; +inf gives the basic wrap */
+  void setDelta (double delta) { parameters_.threshold = Threshold::size (delta); }
   /** \brief Wrap tighter: delete sinks of radius larger than \a radius.
     * \param[in] radius the threshold radius */
-  void setRadius (double radius) { parameters_.delta = radius * radius; }
+  void setRadius (double radius) { parameters_.threshold = Threshold::radius (radius); }
   /** \brief Wrap tighter: delete sinks of radius larger than \a factor times the median
     * nearest-neighbour distance.
-    * \param[in] factor the factor; 0 (default) uses the delta instead */
-  void setRelativeRadius (double factor) { parameters_.radius_rel = factor; }
-  /** \brief How sinks are deleted: front (default, never carves a cavity) or global.
+    * \param[in] factor the factor, > 0 */
+  void setRelativeRadius (double factor) { parameters_.threshold = Threshold::relativeRadius (factor); }
+  /** \brief How sinks above a size are deleted: front (default, never carves a cavity) or global.
     * \param[in] mode the mode */
   void setSinkDeletion (SinkDeletion mode) { parameters_.deletion = mode; }
-  /** \brief Global deletion of the \a count largest sinks (0: use the threshold).
-    * \param[in] count the number of sinks */
-  void setSinks (std::size_t count) { parameters_.sinks = count; }
+  /** \brief Global deletion of the \a count largest sinks.
+    * \param[in] count the number of sinks; 0 gives the basic wrap */
+  void setSinks (std::size_t count) { parameters_.threshold = count > 0 ? Threshold::largest (count) : Threshold (); }
 
   /** \brief Local modification: front deletion starts only from the part of W inside \a region
     * (with the threshold set above).
@@ -93,7 +97,7 @@ public:
   void setWeights (std::vector<double> weights) { weights_ = std::move (weights); }
   /** \brief Reads the weights from this field of the points (e.g. "intensity", "curvature").
     * \param[in] field the field's name; empty: no weights */
-  void setWeightField (const std::string& field) { parameters_.weight_field = field; }
+  void setWeightField (const std::string& field) { weight_field_ = field; }
   /** \brief Multiplies every weight before use.
     * \param[in] scale the factor (default 1) */
   void setWeightScale (double scale) { parameters_.weight_scale = scale; }
@@ -130,6 +134,7 @@ private:
   using pcl::SurfaceReconstruction<PointInT>::indices_;
 
   WrapParameters parameters_;
+  std::string weight_field_;
   std::vector<double> weights_;
   WrapResult result_;
 };

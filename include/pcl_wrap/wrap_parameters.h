@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <string>
 
 namespace pcl_wrap
 {
@@ -61,6 +60,48 @@ struct Region
   }
 };
 
+/** \brief Which sinks (empty spheres, §8) the construction deletes to wrap tighter: none (the
+  * basic wrap, the default), those larger than a size, or the J largest. One value, so that
+  * setting one threshold replaces the other. */
+class Threshold
+{
+public:
+  enum class Kind : std::uint8_t
+  {
+    none,            ///< the basic wrap
+    size,            ///< sinks whose size (squared radius of their sphere) exceeds value()
+    relative_radius, ///< sinks whose radius exceeds value() times the spacing (medianSpacing())
+    largest          ///< the count() largest sinks, wherever they are (always a global deletion)
+  };
+
+  Threshold () = default;
+  /** \brief Sinks of squared radius larger than \a delta (+inf: none). */
+  static Threshold size (double delta) { return {Kind::size, delta, 0}; }
+  /** \brief Sinks of radius larger than \a radius. */
+  static Threshold radius (double radius) { return {Kind::size, radius * radius, 0}; }
+  /** \brief Sinks of radius larger than \a factor times the median nearest-neighbour distance:
+    * the same sinks at any scale. */
+  static Threshold relativeRadius (double factor) { return {Kind::relative_radius, factor, 0}; }
+  /** \brief The \a count largest sinks (omega, the outside, is always deleted and not counted). */
+  static Threshold largest (std::size_t count) { return {Kind::largest, 0.0, count}; }
+
+  Kind kind () const { return kind_; }
+  double value () const { return value_; }
+  std::size_t count () const { return count_; }
+  /** \brief Does it delete anything? */
+  bool deletes () const
+  {
+    return kind_ == Kind::relative_radius || kind_ == Kind::largest ||
+           (kind_ == Kind::size && value_ < std::numeric_limits<double>::infinity ());
+  }
+
+private:
+  Threshold (Kind kind, double value, std::size_t count) : kind_ (kind), value_ (value), count_ (count) {}
+  Kind kind_ = Kind::none;
+  double value_ = 0.0;
+  std::size_t count_ = 0;
+};
+
 /** \brief Every tunable of the Wrap construction, with its default written once here.
   *
   * The PCL class, the command-line tool and the ROS node all read their defaults from this
@@ -82,18 +123,10 @@ struct WrapParameters
     * power distance from point p is |x - p|^2 - w_p. */
   double weight_scale = 1.0;
 
-  /** \brief Which sinks to delete (see SinkDeletion); nothing is deleted unless a threshold or a
-    * number of sinks is given. */
+  /** \brief Which sinks to delete; by default none (the basic wrap). */
+  Threshold threshold;
+  /** \brief How sinks above a size threshold are deleted (see SinkDeletion). */
   SinkDeletion deletion = SinkDeletion::front;
-  /** \brief Delete sinks whose size (squared radius of their empty sphere) exceeds this; +inf:
-    * the basic wrap. */
-  double delta = std::numeric_limits<double>::infinity ();
-  /** \brief If > 0, the threshold is (radius_rel * spacing)^2 instead, with spacing the median
-    * nearest-neighbour distance of the points. */
-  double radius_rel = 0.0;
-  /** \brief Global deletion: if > 0, delete the this many largest sinks instead (omega is always
-    * deleted and not counted). */
-  std::size_t sinks = 0;
 
   /** \brief Local modification (§8): front deletion starts only from the part of W inside this
     * region (its simplices whose vertices all lie in it), with the threshold above; the rest of
@@ -115,12 +148,6 @@ struct WrapParameters
     * Costs the exact ordering of all sinks and one more retraction, and keeps the complex. */
   bool filtration = false;
 
-  /** \brief Is any sink deletion asked for? */
-  bool deletesSinks () const { return delta < std::numeric_limits<double>::infinity () || radius_rel > 0 || sinks > 0; }
-
-  /** \brief The point field that holds the weights (e.g. "intensity" or "curvature"), read by
-    * the PCL class, the command-line tool and the ROS node; empty: no weights (all 0). */
-  std::string weight_field;
 };
 
 } // namespace pcl_wrap

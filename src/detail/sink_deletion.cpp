@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pcl_wrap::detail
 {
@@ -32,12 +33,16 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
   recordSinks (order, stats);
   stats.spacing = complex.size (1) == 0 ? 0.0
                                          : medianNearestNeighbourDistance (complex.vertices (1, 0), complex.size (1), 1, positions);
-  stats.delta = parameters.radius_rel > 0 ? std::pow (parameters.radius_rel * stats.spacing, 2) : parameters.delta;
+  const Threshold& threshold = parameters.threshold;
+  using Kind = Threshold::Kind;
+  stats.delta = threshold.kind () == Kind::relative_radius ? std::pow (threshold.value () * stats.spacing, 2)
+              : threshold.kind () == Kind::size         ? threshold.value ()
+                                                        : std::numeric_limits<double>::infinity ();
 
-  if (parameters.deletion == SinkDeletion::global || parameters.sinks > 0)
+  if (parameters.deletion == SinkDeletion::global || threshold.kind () == Kind::largest)
   {
     const auto keep_going = [&] (std::size_t rank, double size) {
-      return parameters.sinks > 0 ? rank < parameters.sinks : size > stats.delta;
+      return threshold.kind () == Kind::largest ? rank < threshold.count () : size > stats.delta;
     };
     stats.sinks_not_principal =
         deleteSinksGlobally (y, order, keep_going, [] (std::size_t) {}, stats.sinks_deleted);

@@ -145,7 +145,7 @@ tightParameters ()
 {
   pcl_wrap::WrapParameters p; // what run_ros_test.sh gives the /tight node
   p.output = pcl_wrap::Output::raw;
-  p.radius_rel = 2;
+  p.threshold = pcl_wrap::Threshold::relativeRadius (2);
   p.manifold = true;
   return p;
 }

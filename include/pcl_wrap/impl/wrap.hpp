@@ -31,13 +31,13 @@ Wrap<PointInT>::gatherWeights (const pcl::Indices& indices) const
     for (const auto i : indices)
       weights.push_back (weights_[i]);
   }
-  else if (!parameters_.weight_field.empty ())
+  else if (!weight_field_.empty ())
   {
     const auto fields = pcl::getFields<PointInT> ();
     const auto field = std::find_if (fields.begin (), fields.end (),
-                                     [&] (const pcl::PCLPointField& f) { return f.name == parameters_.weight_field; });
+                                     [&] (const pcl::PCLPointField& f) { return f.name == weight_field_; });
     if (field == fields.end ())
-      throw std::invalid_argument ("the points have no field '" + parameters_.weight_field + "'");
+      throw std::invalid_argument ("the points have no field '" + weight_field_ + "'");
     for (const auto i : indices)
       weights.push_back (readPointField (reinterpret_cast<const std::uint8_t*> (&(*input_)[i]), *field));
   }
