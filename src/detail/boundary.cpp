@@ -92,25 +92,15 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
   }
 }
 
-} // namespace
-
-Boundary
-extractBoundary (const SimplicialComplex& complex, const Retraction& x)
+/** Appends to \a w the facets that \a facets_of (t) flags (bit i: the facet opposite local vertex
+  * i) of every tetrahedron t, each oriented away from its tetrahedron, in the order of the
+  * tetrahedra; on all threads. */
+template <class FacetsOf>
+void
+writeFacets (const SimplicialComplex& complex, const FacetsOf& facets_of, Boundary& w)
 {
-  Boundary w;
-  // Facets of X's tetrahedra with one tetrahedron of X, in the order of the tetrahedra: the
-  // first pass finds them (a mask per tetrahedron), the second writes them.
-  std::vector<std::uint8_t> facets (complex.size (3), 0);
   fillInOrder (
-      complex.size (3),
-      [&] (std::size_t id) {
-        const auto t = static_cast<SimplexId> (id);
-        if (x.inY ({3, t}))
-          for (int i = 0; i < 4; ++i)
-            if (x.cofacesInY (complex.facet (3, t, i)) == 1)
-              facets[t] |= 1u << i;
-        return std::size_t (maskSize (facets[t]));
-      },
+      complex.size (3), [&] (std::size_t t) { return std::size_t (maskSize (facets_of (t))); },
       [&] (std::size_t total) {
         w.triangles.resize (total);
         w.triangle_ids.resize (total);
@@ -118,8 +108,9 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
       [&] (std::size_t id, std::size_t at) {
         const auto t = static_cast<SimplexId> (id);
         const std::uint32_t* v = complex.vertices (3, t);
+        const unsigned mask = facets_of (id);
         for (int i = 0; i < 4; ++i)
-          if (facets[t] & (1u << i))
+          if (mask & (1u << i))
           {
             const int* o = OUTWARD_FACET[i];
             w.triangles[at] = {v[o[0]], v[o[1]], v[o[2]]};
@@ -127,6 +118,24 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
           }
         return at;
       });
+}
+
+} // namespace
+
+Boundary
+extractBoundary (const SimplicialComplex& complex, const Retraction& x)
+{
+  Boundary w;
+  // Facets of X's tetrahedra with one tetrahedron of X, found once (a mask per tetrahedron).
+  std::vector<std::uint8_t> facets (complex.size (3), 0);
+  parallelForEach (complex.size (3), [&] (std::size_t id) {
+    const auto t = static_cast<SimplexId> (id);
+    if (x.inY ({3, t}))
+      for (int i = 0; i < 4; ++i)
+        if (x.cofacesInY (complex.facet (3, t, i)) == 1)
+          facets[t] |= 1u << i;
+  });
+  writeFacets (complex, [&] (std::size_t t) { return unsigned (facets[t]); }, w);
   facets = {};
 
   // The simplices of X with no coface in X, per dimension.
@@ -163,36 +172,20 @@ extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<s
                       const std::vector<std::uint8_t>& inside)
 {
   Boundary w;
-  const auto facing_out = [&] (std::size_t t, int i) {
-    const std::uint32_t u = neighbours[4 * t + i];
-    return u == NO_NEIGHBOUR || !inside[u];
-  };
-  fillInOrder (
-      inside.size (),
+  writeFacets (
+      complex,
       [&] (std::size_t t) {
-        std::size_t count = 0;
+        unsigned mask = 0;
         if (inside[t])
           for (int i = 0; i < 4; ++i)
-            count += facing_out (t, i);
-        return count;
+          {
+            const std::uint32_t u = neighbours[4 * t + i];
+            if (u == NO_NEIGHBOUR || !inside[u])
+              mask |= 1u << i;
+          }
+        return mask;
       },
-      [&] (std::size_t total) {
-        w.triangles.resize (total);
-        w.triangle_ids.resize (total);
-      },
-      [&] (std::size_t id, std::size_t at) {
-        const auto t = static_cast<SimplexId> (id);
-        const std::uint32_t* v = complex.vertices (3, t);
-        if (inside[t])
-          for (int i = 0; i < 4; ++i)
-            if (facing_out (t, i))
-            {
-              const int* o = OUTWARD_FACET[i];
-              w.triangles[at] = {v[o[0]], v[o[1]], v[o[2]]};
-              w.triangle_ids[at++] = complex.facet (3, t, i).id;
-            }
-        return at;
-      });
+      w);
   return w;
 }
 
