@@ -44,7 +44,7 @@ computeWrap (const std::vector<Point3>& points,
 
 /** \brief The median distance from a point to its nearest neighbour, from the Delaunay
   * triangulation of the distinct finite points, in double precision: the spacing that
-  * WrapParameters::radius_rel is relative to (with weights, the construction takes the nearest
+  * Threshold::relativeRadius() is relative to (with weights, the construction takes the nearest
   * neighbour among the points sharing a simplex of the regular triangulation). 0 for fewer than
   * two distinct points. */
 double
