@@ -11,7 +11,10 @@ file=$(realpath "$1") out=$(realpath -m "$2")
 work=$(mktemp -d)
 viewer=""
 cleanup() {
-  [ -z "$viewer" ] || kill "$viewer" 2> /dev/null || true
+  if [ -n "$viewer" ]; then
+    kill "$viewer" 2> /dev/null || true
+    wait "$viewer" 2> /dev/null || true # its window is gone before the next viewer is searched for
+  fi
   rm -rf "$work"
 }
 trap cleanup EXIT
