@@ -10,3 +10,11 @@ mkdir -p data/fetched
 for f in data/meshes/bunny00.off data/points_3/kitten.xyz data/meshes/fandisk.off; do
   [ -f "data/fetched/$(basename "$f")" ] || tar -xzf "$archive" -O "$f" > "data/fetched/$(basename "$f")"
 done
+# The bunny's points alone as a PLY file, for examples/python/wrap_bunny.py.
+if [ ! -f data/fetched/bunny00_points.ply ]; then
+  awk '/^[[:space:]]*(#|$)/ || (!header && $1 == "OFF") { next } # blank, comment, the OFF line
+       !header { header = 1; n = $1; print "ply\nformat ascii 1.0\nelement vertex " n
+                 print "property double x\nproperty double y\nproperty double z\nend_header"; next }
+       written < n { print $1, $2, $3; ++written }' data/fetched/bunny00.off > data/fetched/bunny00_points.ply.part
+  mv data/fetched/bunny00_points.ply.part data/fetched/bunny00_points.ply
+fi

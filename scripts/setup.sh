@@ -18,6 +18,8 @@ PACKAGES=(
   pcl-tools xvfb xauth xdotool python3-pil
   # The benchmark's peers from Python (Open3D's ball pivoting and alpha shape) and its plots
   python3-open3d python3-matplotlib
+  # The Python package
+  python3-dev pybind11-dev python3-numpy
 )
 
 missing=()

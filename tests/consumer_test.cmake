@@ -3,7 +3,8 @@
 # in examples/consumer (and builds examples/pipeline) against it with find_package(pcl_wrap): what
 # a downstream user does. With STATIC, first builds the library alone as a static library (in
 # WORK_DIR/static) and installs that instead. Without STATIC, also runs the installed command-line
-# tool with no LD_LIBRARY_PATH: it finds the installed library by itself.
+# tool with no LD_LIBRARY_PATH: it finds the installed library by itself; with PYTHON (an
+# interpreter), imports the installed Python package from the prefix and wraps with it.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
@@ -13,7 +14,8 @@ function(run)
 endfunction()
 if(STATIC)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/static -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=OFF
-      -DPCL_WRAP_BUILD_APPS=OFF -DPCL_WRAP_BUILD_TESTS=OFF -DPCL_WRAP_BUILD_BENCH=OFF)
+      -DPCL_WRAP_BUILD_APPS=OFF -DPCL_WRAP_BUILD_TESTS=OFF -DPCL_WRAP_BUILD_BENCH=OFF
+      -DPCL_WRAP_BUILD_PYTHON=OFF)
   run(${CMAKE_COMMAND} --build ${WORK_DIR}/static -j2)
   set(BUILD_DIR ${WORK_DIR}/static)
 endif()
@@ -29,6 +31,12 @@ if(NOT STATIC)
   if(NOT EXISTS ${WORK_DIR}/points.ply)
     message(FATAL_ERROR "the installed pcl_wrap wrote no mesh")
   endif()
+endif()
+if(PYTHON) # the installed Python package, from the prefix alone
+  run(${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH PYTHONPATH=${WORK_DIR}/prefix/lib/python3/dist-packages
+      PYTHONDONTWRITEBYTECODE=1 ${PYTHON} -c
+      "import pcl_wrap; assert pcl_wrap.__file__.startswith('${WORK_DIR}/prefix'), pcl_wrap.__file__; \
+r = pcl_wrap.wrap([[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]]); assert len(r.triangles) == 6, r")
 endif()
 if(EXISTS ${WORK_DIR}/prefix/include/pcl_wrap)
   file(GLOB_RECURSE headers ${WORK_DIR}/prefix/include/pcl_wrap/*)
