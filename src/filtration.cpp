@@ -61,15 +61,14 @@ Filtration::surface (double delta) const
 {
   const Data& d = dataOf (data_);
   const detail::Retraction x (*d.complex, *d.classification, membership (d, delta));
-  return detail::inInputIndices (detail::extractBoundary (*d.complex, x), d.point_of_vertex);
+  return d.input_indices.surface (detail::extractBoundary (*d.complex, x));
 }
 
 Filtration
 Filtration::reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const
 {
   auto data = std::make_shared<Data> (dataOf (data_));
-  for (auto& p : data->point_of_vertex)
-    p = index (p);
+  data->input_indices = data->input_indices.reindexed (index);
   return Filtration (std::move (data));
 }
 

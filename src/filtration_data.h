@@ -3,6 +3,7 @@
 #pragma once
 
 #include "detail/classification.h"
+#include "detail/input_indices.h"
 #include "detail/simplicial_complex.h"
 #include "detail/wrap_filtration.h"
 
@@ -20,7 +21,7 @@ struct Filtration::Data
   std::shared_ptr<const detail::SimplicialComplex> complex;
   std::shared_ptr<const detail::Classification> classification;
   std::shared_ptr<const detail::WrapFiltration> filtration;
-  std::vector<PointIndex> point_of_vertex; ///< vertex id -> point index
+  detail::InputIndices input_indices;
 };
 
 } // namespace pcl_wrap

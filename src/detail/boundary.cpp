@@ -189,19 +189,4 @@ extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<s
   return w;
 }
 
-WrapSurface
-inInputIndices (const Boundary& w, const std::vector<PointIndex>& input_of_vertex)
-{
-  WrapSurface surface;
-  surface.triangles.reserve (w.triangles.size ());
-  for (const auto& t : w.triangles)
-    surface.triangles.push_back ({input_of_vertex[t[0]], input_of_vertex[t[1]], input_of_vertex[t[2]]});
-  for (const auto& e : w.dangling_edges)
-    surface.dangling_edges.push_back ({std::min (input_of_vertex[e[0]], input_of_vertex[e[1]]),
-                                       std::max (input_of_vertex[e[0]], input_of_vertex[e[1]])});
-  for (std::uint32_t v : w.isolated_vertices)
-    surface.isolated_vertices.push_back (input_of_vertex[v]);
-  return surface;
-}
-
 } // namespace pcl_wrap::detail

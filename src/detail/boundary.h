@@ -39,8 +39,4 @@ Boundary
 extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
                       const std::vector<std::uint8_t>& inside);
 
-/** \brief \a w with vertex v read as point input_of_vertex[v]. */
-WrapSurface
-inInputIndices (const Boundary& w, const std::vector<PointIndex>& input_of_vertex);
-
 } // namespace pcl_wrap::detail

@@ -25,7 +25,7 @@ std::vector<std::vector<std::uint32_t>>
 naiveRetraction (const std::vector<NaiveSimplex>& del, unsigned seed,
                  const std::vector<std::vector<std::uint32_t>>& deletions = {});
 
-struct Pipeline;
+class Pipeline;
 
 /** Del S of \a p with the classes of the exact rational reference (never the engine's); asserts
   * (gtest) that the reference met no tie. */

@@ -2,14 +2,11 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-// The engine's stages run one by one, so tests can look at each of them.
+// The engine's first stages (input, triangulation, complex, classification), run one by one, so
+// tests can look at what each built.
 #include "detail/boundary.h"
-#include "detail/classification.h"
-#include "detail/input_points.h"
-#include "detail/power_predicates.h"
-#include "detail/regular_triangulation.h"
 #include "detail/retraction.h"
-#include "detail/simplicial_complex.h"
+#include "detail/wrap_engine.h"
 
 #include <algorithm>
 #include <memory>
@@ -20,35 +17,46 @@ namespace pcl_wrap::test
 
 using Tuple = std::vector<std::uint32_t>; // sorted vertex ids of a simplex
 
-struct Pipeline
+class Pipeline
 {
-  std::vector<Point3> points;  // per vertex id
-  std::vector<double> weights; // per vertex id
-  std::vector<Point3> hidden_points;  // points with an empty power cell
-  std::vector<double> hidden_weights;
-  detail::SimplicialComplex complex;
-  std::unique_ptr<detail::PowerPredicates> predicates;
-  detail::Classification classification;
+  std::vector<Point3> input_;
+  std::vector<double> input_weights_;
+  WrapParameters parameters_;
+  std::unique_ptr<detail::WrapEngine> engine_;
 
+  static std::unique_ptr<detail::WrapEngine> classified (const std::vector<Point3>& input,
+                                                         const std::vector<double>& weights,
+                                                         const WrapParameters& parameters)
+  {
+    auto engine = std::make_unique<detail::WrapEngine> (input, weights, parameters);
+    engine->selectInput ();
+    engine->triangulate ();
+    engine->buildComplex ();
+    engine->classify ();
+    return engine;
+  }
+
+public:
   /** Finite points with weights (empty: all 0). */
   explicit Pipeline (const std::vector<Point3>& input, const std::vector<double>& input_weights = {})
+    : input_ (input), input_weights_ (input_weights), engine_ (classified (input_, input_weights_, parameters_))
   {
-    const detail::InputPoints s = detail::selectInputPoints (input, input_weights);
-    detail::Triangulation t = detail::triangulate (s.positions, s.weights);
-    for (std::uint32_t h : t.hidden)
+    for (PointIndex h : engine_->result ().hidden)
     {
-      hidden_points.push_back (s.positions[h]);
-      hidden_weights.push_back (s.weights[h]);
+      hidden_points.push_back (input_[h]);
+      hidden_weights.push_back (input_weights_.empty () ? 0.0 : input_weights_[h]);
     }
-    for (std::uint32_t p : t.point_of_vertex)
-    {
-      points.push_back (s.positions[p]);
-      weights.push_back (s.weights[p]);
-    }
-    complex = detail::SimplicialComplex (t.dimension, static_cast<std::uint32_t> (points.size ()), std::move (t.top_simplices), t.neighbours);
-    predicates = std::make_unique<detail::PowerPredicates> (points, weights);
-    classification = detail::classify (complex, *predicates);
   }
+  Pipeline (const Pipeline&) = delete;
+  Pipeline& operator= (const Pipeline&) = delete;
+
+  const std::vector<Point3>& points = engine_->vertexPositions (); // per vertex id
+  const std::vector<double>& weights = engine_->vertexWeights ();  // per vertex id
+  std::vector<Point3> hidden_points;                               // points with an empty power cell
+  std::vector<double> hidden_weights;
+  const detail::SimplicialComplex& complex = engine_->complex ();
+  const detail::PowerPredicates* const predicates = &engine_->predicates ();
+  const detail::Classification& classification = engine_->classification ();
 
   int dimension () const { return complex.dimension (); }
 

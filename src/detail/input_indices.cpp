@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "input_indices.h"
+
+#include <algorithm>
+
+namespace pcl_wrap::detail
+{
+
+std::vector<PointIndex>
+InputIndices::appendCopies (const std::vector<std::uint32_t>& copy_of, std::size_t input_points)
+{
+  std::vector<PointIndex> copies;
+  copies.reserve (copy_of.size ());
+  for (std::size_t k = 0; k < copy_of.size (); ++k)
+  {
+    copies.push_back (of_vertex_[copy_of[k]]);
+    of_vertex_.push_back (static_cast<PointIndex> (input_points + k));
+  }
+  return copies;
+}
+
+WrapSurface
+InputIndices::surface (const Boundary& w) const
+{
+  const InputIndices& in = *this;
+  WrapSurface surface;
+  surface.triangles.reserve (w.triangles.size ());
+  for (const auto& t : w.triangles)
+    surface.triangles.push_back ({in (t[0]), in (t[1]), in (t[2])});
+  for (const auto& e : w.dangling_edges)
+    surface.dangling_edges.push_back ({std::min (in (e[0]), in (e[1])), std::max (in (e[0]), in (e[1]))});
+  for (std::uint32_t v : w.isolated_vertices)
+    surface.isolated_vertices.push_back (in (v));
+  return surface;
+}
+
+std::array<SimplexList, 4>
+InputIndices::complex (const SimplicialComplex& complex, const Classification& classification,
+                       const Retraction& x) const
+{
+  std::array<SimplexList, 4> lists;
+  for (int k = 0; k <= 3; ++k)
+  {
+    SimplexList& list = lists[k];
+    list.vertices.reserve ((k + 1) * complex.size (k));
+    list.classes.assign (classification.classes[k].begin (), classification.classes[k].end ());
+    list.in_x.resize (complex.size (k));
+    for (SimplexId s = 0; s < complex.size (k); ++s)
+    {
+      list.in_x[s] = x.inY ({k, s});
+      for (int i = 0; i <= k; ++i)
+        list.vertices.push_back (of_vertex_[complex.vertex (k, s, i)]);
+    }
+  }
+  return lists;
+}
+
+InputIndices
+InputIndices::reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const
+{
+  InputIndices out (of_vertex_);
+  for (PointIndex& p : out.of_vertex_)
+    p = index (p);
+  return out;
+}
+
+} // namespace pcl_wrap::detail
