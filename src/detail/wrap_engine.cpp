@@ -18,7 +18,8 @@ namespace pcl_wrap::detail
 
 WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights,
                         const WrapParameters& parameters, const StageObserver& observer)
-  : points_ (points), weights_ (weights), parameters_ (parameters), clock_ (result_.statistics, observer)
+  : points_ (points), weights_ (weights), parameters_ (parameters), observer_ (observer),
+    clock_ (result_.statistics, observer_)
 {}
 
 WrapEngine::~WrapEngine ()

@@ -89,6 +89,7 @@ private:
   const std::vector<double>& weights_;
   const WrapParameters& parameters_;
   WrapResult result_;
+  const StageObserver observer_; // a copy: the caller's may be a temporary
   StageClock clock_;
 
   InputPoints input_;
