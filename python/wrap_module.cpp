@@ -23,28 +23,30 @@ namespace
 
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/** An (rows, columns) array of \a T filled from \a values, rows * columns of them. */
+/** An array of \a T of the given shape, filled from \a values (as many as the shape holds). */
 template <typename T, typename Source>
 py::array_t<T>
-matrix (const Source* values, std::size_t rows, std::size_t columns)
+filled (const Source* values, std::vector<py::ssize_t> shape)
 {
-  py::array_t<T> out ({rows, columns});
+  py::array_t<T> out (shape);
   T* o = out.mutable_data ();
-  for (std::size_t i = 0; i < rows * columns; ++i)
+  for (py::ssize_t i = 0; i < out.size (); ++i)
     o[i] = static_cast<T> (values[i]);
   return out;
 }
 
-/** A 1-D array of \a T from \a values. */
+template <typename T, typename Source>
+py::array_t<T>
+matrix (const Source* values, std::size_t rows, std::size_t columns)
+{
+  return filled<T> (values, {py::ssize_t (rows), py::ssize_t (columns)});
+}
+
 template <typename T, typename Source>
 py::array_t<T>
 vector (const std::vector<Source>& values)
 {
-  py::array_t<T> out (values.size ());
-  T* o = out.mutable_data ();
-  for (std::size_t i = 0; i < values.size (); ++i)
-    o[i] = static_cast<T> (values[i]);
-  return out;
+  return filled<T> (values.data (), {py::ssize_t (values.size ())});
 }
 
 py::dict
@@ -151,10 +153,7 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
     result = computeWrap (positions, weights, parameters);
   }
 
-  py::dict out;
-  py::dict w = surface (result.surface);
-  for (auto item : w)
-    out[item.first] = item.second;
+  py::dict out = surface (result.surface);
   out["skipped"] = vector<std::int64_t> (result.skipped);
   out["hidden"] = vector<std::int64_t> (result.hidden);
   out["copies"] = vector<std::int64_t> (result.copies);
@@ -168,6 +167,19 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
   if (!result.filtration.empty ())
     out["filtration"] = result.filtration;
   return out;
+}
+
+/** The name of a threshold's kind, as its Python factory is named. */
+const char*
+kindName (const Threshold& t)
+{
+  switch (t.kind ())
+  {
+  case Threshold::Kind::size: return "size";
+  case Threshold::Kind::relative_radius: return "relative_radius";
+  case Threshold::Kind::largest: return "largest";
+  default: return "none";
+  }
 }
 
 } // namespace
@@ -185,26 +197,15 @@ PYBIND11_MODULE (_core, m)
                    "Sinks of radius larger than factor times the median nearest-neighbour distance.")
       .def_static ("largest", &Threshold::largest, py::arg ("count"),
                    "The count largest sinks (always a global deletion).")
-      .def_property_readonly ("kind",
-                              [] (const Threshold& t) {
-                                switch (t.kind ())
-                                {
-                                case Threshold::Kind::size: return "size";
-                                case Threshold::Kind::relative_radius: return "relative_radius";
-                                case Threshold::Kind::largest: return "largest";
-                                default: return "none";
-                                }
-                              })
+      .def_property_readonly ("kind", &kindName)
       .def_property_readonly ("value", &Threshold::value)
       .def_property_readonly ("count", &Threshold::count)
       .def ("__repr__", [] (const Threshold& t) {
-        const std::string value = py::repr (py::float_ (t.value ()));
         switch (t.kind ())
         {
-        case Threshold::Kind::size: return "Threshold.size(" + value + ")";
-        case Threshold::Kind::relative_radius: return "Threshold.relative_radius(" + value + ")";
+        case Threshold::Kind::none: return std::string ("Threshold()");
         case Threshold::Kind::largest: return "Threshold.largest(" + std::to_string (t.count ()) + ")";
-        default: return std::string ("Threshold()");
+        default: return std::string ("Threshold.") + kindName (t) + "(" + std::string (py::repr (py::float_ (t.value ()))) + ")";
         }
       });
 

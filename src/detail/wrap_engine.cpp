@@ -24,8 +24,15 @@ WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<dou
 
 WrapEngine::~WrapEngine ()
 {
-  if (flooding_started_)
-    flooding_.wait ();
+  if (!labelling_)
+    return;
+  try
+  {
+    flooding_.wait (); // a stage threw while the flood ran; its own exception, if any, is dropped
+  }
+  catch (...)
+  {
+  }
 }
 
 WrapResult
@@ -104,7 +111,6 @@ WrapEngine::startSolidLabelling ()
   labelling_.emplace (triangulation_.top_simplices, triangulation_.neighbours, vertex_positions_, vertex_weights_);
   clock_.stageDone ("votes");
   flooding_.run ([this] { labelling_->flood (); });
-  flooding_started_ = true;
 }
 
 void
@@ -184,7 +190,6 @@ WrapEngine::extractSurface ()
   // The boundary of a labelled solid of Delaunay tetrahedra, repaired to a manifold; where the
   // repair leaves the surface touching itself, the pinch split of the raw output separates it.
   flooding_.wait ();
-  flooding_started_ = false;
   SolidLabels labels = labelling_->labels (*x_);
   labelling_.reset ();
   clock_.stageDone ("labelling");

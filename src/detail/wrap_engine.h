@@ -98,9 +98,8 @@ private:
   std::vector<Point3> vertex_positions_;
   std::vector<double> vertex_weights_;
   InputIndices input_indices_;
-  std::optional<SolidLabelling> labelling_;
+  std::optional<SolidLabelling> labelling_; // engaged while its flood may run
   tbb::task_group flooding_;
-  bool flooding_started_ = false;
   std::shared_ptr<SimplicialComplex> complex_; // shared with the filtration
   FilledInParallel<std::uint32_t> neighbours_; // the surface stage's walk
   std::unique_ptr<PowerPredicates> predicates_;
