@@ -195,10 +195,14 @@ parseOptions (int argc, char** argv)
   o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];
   o.output = positional[1];
-  if (o.parameters.region.shape != Region::Shape::everywhere &&
-      (o.parameters.deletion != SinkDeletion::front || o.parameters.threshold.kind () == Threshold::Kind::largest ||
-       !o.parameters.threshold.deletes ()))
-    usageError ("--region needs a threshold (--delta, --radius or --radius-rel) and front mode");
+  try
+  {
+    checkParameters (o.parameters); // e.g. a region without a threshold, before reading the input
+  }
+  catch (const std::invalid_argument& e)
+  {
+    usageError (e.what ());
+  }
   if (!apps::isMeshFormat (o.output))
     usageError (o.output + ": unknown output format (expected .ply, .obj or .vtk)");
   return o;

@@ -42,41 +42,34 @@ WrapResult::xSimplices (int k) const
   return out;
 }
 
-namespace
-{
-
-/** Rejects parameters that have no meaning, before any work. */
 void
 checkParameters (const WrapParameters& p)
 {
-  const auto fail = [] (const std::string& what) { throw std::invalid_argument ("computeWrap: " + what); };
   const Threshold& t = p.threshold;
   if (t.kind () == Threshold::Kind::size && std::isnan (t.value ()))
-    fail ("the threshold size is NaN");
+    throw std::invalid_argument ("the threshold size is NaN");
   if (t.kind () == Threshold::Kind::relative_radius && !(t.value () > 0 && std::isfinite (t.value ())))
-    fail ("a relative radius must be finite and > 0");
+    throw std::invalid_argument ("a relative radius must be finite and > 0");
   if (t.kind () == Threshold::Kind::largest && t.count () == 0)
-    fail ("the largest sinks: a count >= 1");
+    throw std::invalid_argument ("the largest sinks: a count >= 1");
   if (!std::isfinite (p.weight_scale))
-    fail ("weight_scale must be finite");
+    throw std::invalid_argument ("weight_scale must be finite");
   const Region& r = p.region;
   if (r.shape == Region::Shape::everywhere)
     return;
   for (double v : r.values)
     if (!std::isfinite (v))
-      fail ("region coordinates must be finite");
+      throw std::invalid_argument ("region coordinates must be finite");
   if (r.shape == Region::Shape::sphere && r.values[3] < 0)
-    fail ("region sphere radius must be >= 0");
+    throw std::invalid_argument ("region sphere radius must be >= 0");
   if (r.shape == Region::Shape::box && !(r.values[0] <= r.values[3] && r.values[1] <= r.values[4] &&
                                          r.values[2] <= r.values[5]))
-    fail ("region box corners must be lowest then highest");
+    throw std::invalid_argument ("region box corners must be lowest then highest");
   if (p.deletion != SinkDeletion::front || t.kind () == Threshold::Kind::largest)
-    fail ("a region (local modification) works with front deletion only");
+    throw std::invalid_argument ("a region (local modification) works with front deletion only");
   if (!t.deletes ())
-    fail ("a region (local modification) needs a size threshold");
+    throw std::invalid_argument ("a region (local modification) needs a size threshold");
 }
-
-} // namespace
 
 WrapResult
 computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters, const StageObserver& observer)

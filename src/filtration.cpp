@@ -5,7 +5,7 @@
 #include "filtration_data.h"
 
 #include "detail/boundary.h"
-#include "detail/retraction.h"
+#include "detail/subcomplex.h"
 
 #include <stdexcept>
 
@@ -60,7 +60,7 @@ WrapSurface
 Filtration::surface (double delta) const
 {
   const Data& d = dataOf (data_);
-  const detail::Retraction x (*d.complex, *d.classification, membership (d, delta));
+  const detail::Subcomplex x (*d.complex, membership (d, delta));
   return d.input_indices.surface (detail::extractBoundary (*d.complex, x));
 }
 

@@ -65,20 +65,21 @@ TEST (WrapFiltration, ReproducesDeletionsOneByOne)
       ASSERT_FALSE (f.sinks.empty ());
       // Delete the sinks one by one, independently, and compare after j deletions wherever the
       // j-th and (j+1)-th sizes differ (so a threshold separates them).
-      detail::Retraction y (p.complex, p.classification);
-      y.retract ();
+      detail::Subcomplex y (p.complex);
+      detail::Retraction retraction (y, p.classification);
+      retraction.retract ();
       EXPECT_EQ (xAt (p, f, std::numeric_limits<double>::max ()), p.retractedX ()) << "X(inf) is the basic X";
       std::size_t compared = 0;
       for (std::size_t j = 0; j < f.sinks.size (); ++j)
       {
-        if (y.deletePrincipal (f.sinks[j]))
-          y.retract ();
+        if (retraction.deletePrincipal (f.sinks[j]))
+          retraction.retractFreed ();
         const double next = j + 1 < f.sinks.size () ? f.sink_sizes[j + 1] : -std::numeric_limits<double>::max ();
         if (!(next < f.sink_sizes[j]) || j % 7 != 0)
           continue;
         std::vector<Tuple> expected;
         forEachSimplex (p, [&] (Simplex s) {
-          if (y.inY (s))
+          if (y.contains (s))
             expected.push_back (p.tuple (s));
         });
         std::sort (expected.begin (), expected.end ());

@@ -26,12 +26,13 @@ namespace
 {
 
 using detail::Retraction;
+using detail::Subcomplex;
 using detail::Simplex;
 using detail::SimplexId;
 
 struct Wrapped
 {
-  std::unique_ptr<Retraction> y;
+  std::unique_ptr<Subcomplex> y;
   detail::FrontDeletion deletion;
 };
 
@@ -40,15 +41,15 @@ frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0, const 
 {
   detail::WrapFiltration order;
   detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);
-  Wrapped w{std::make_unique<Retraction> (p.complex, p.classification), {}};
-  w.y->retract (order_seed);
-  w.deletion = detail::deleteExposedSinks (p.complex, *w.y, order, delta, in_front, order_seed);
+  Wrapped w{std::make_unique<Subcomplex> (p.complex), {}};
+  Retraction (*w.y, p.classification).retract (order_seed);
+  w.deletion = detail::deleteExposedSinks (*w.y, p.classification, order, delta, in_front, order_seed);
   return w;
 }
 
 /** No cavity: every tetrahedron outside X reaches the outside through triangles outside X. */
 bool
-everyEmptyTetrahedronReachesOutside (const Pipeline& p, const Retraction& y)
+everyEmptyTetrahedronReachesOutside (const Pipeline& p, const Subcomplex& y)
 {
   const SimplexId outside = static_cast<SimplexId> (p.complex.size (3));
   std::vector<SimplexId> parent (outside + 1);
@@ -65,23 +66,23 @@ everyEmptyTetrahedronReachesOutside (const Pipeline& p, const Retraction& y)
     {
       const Simplex f = p.complex.face (3, t, 15u & ~(1u << i));
       ++tets_on[f.id];
-      if (y.inY (f))
+      if (y.contains (f))
         continue; // X separates the two sides
       auto [it, fresh] = first_tet.emplace (f.id, t);
       if (!fresh)
         parent[find (t)] = find (it->second);
     }
   for (const auto& [f, n] : tets_on)
-    if (n == 1 && !y.inY ({2, f}))
+    if (n == 1 && !y.contains ({2, f}))
       parent[find (first_tet.at (f))] = find (outside); // a hull triangle outside X opens to omega
   for (SimplexId t = 0; t < p.complex.size (3); ++t)
-    if (!y.inY ({3, t}) && find (t) != find (outside))
+    if (!y.contains ({3, t}) && find (t) != find (outside))
       return false;
   return true;
 }
 
 SurfaceReport
-surfaceOf (const Pipeline& p, const Retraction& y)
+surfaceOf (const Pipeline& p, const Subcomplex& y)
 {
   const auto w = detail::extractBoundary (p.complex, y);
   return describeSurface ({w.triangles.begin (), w.triangles.end ()});
@@ -162,7 +163,7 @@ TEST (FrontDeletion, NeverCarvesACavityWhereGlobalDeletionDoes)
   for (int k = 0; k <= 3; ++k)
     for (SimplexId s = 0; s < cavity.complex.size (k); ++s)
       in_x[k].push_back (f.inX ({k, s}, 0.05));
-  EXPECT_FALSE (everyEmptyTetrahedronReachesOutside (cavity, Retraction (cavity.complex, cavity.classification, in_x)));
+  EXPECT_FALSE (everyEmptyTetrahedronReachesOutside (cavity, Subcomplex (cavity.complex, in_x)));
 }
 
 TEST (FrontDeletion, IndependentOfTheOrderOfCollapses)
@@ -182,7 +183,7 @@ TEST (FrontDeletion, IndependentOfTheOrderOfCollapses)
       const Wrapped w = frontWrap (*p, delta, order, in_front);
       for (int k = 0; k <= 3; ++k)
         for (SimplexId s = 0; s < p->complex.size (k); ++s)
-          ASSERT_EQ (w.y->inY ({k, s}), reference.y->inY ({k, s}));
+          ASSERT_EQ (w.y->contains ({k, s}), reference.y->contains ({k, s}));
     }
   }
 }

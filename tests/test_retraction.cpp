@@ -3,6 +3,7 @@
 //
 // The retraction (docs/design.md §5): the engine against the naive rescanning retraction, order
 // independence, X contractible, W = Bd X with its triangles oriented away from X.
+#include "detail/wrap_filtration.h"
 #include "support/exact_reference.h"
 #include "support/naive_retraction.h"
 #include "support/pipeline.h"
@@ -72,6 +73,46 @@ TEST (Retraction, FirstRetractionOnAllThreadsEqualsOneOrderOnOneThread)
     const auto one_thread = p.retractedX (5);
     for (int run = 0; run < 3; ++run)
       EXPECT_EQ (p.retractedX (0), one_thread) << "run " << run;
+  }
+}
+
+TEST (Retraction, RolledBackTrialsLeaveYAsItWas)
+{
+  // A front deletion's trial deletes sinks and retracts, then may put everything back: Y and
+  // every coface count must be as before, or later freeness tests go wrong.
+  for (const auto& points : shapes (1500, 13))
+  {
+    const Pipeline p (points);
+    detail::Subcomplex y (p.complex);
+    detail::RemovalLog log (p.complex);
+    detail::Retraction retraction (y, p.classification, &log);
+    retraction.retract ();
+    const auto state = [&] {
+      std::vector<std::uint32_t> out;
+      for (int k = 0; k <= 3; ++k)
+        for (SimplexId s = 0; s < p.complex.size (k); ++s)
+          out.push_back (y.contains ({k, s}) ? 1 + y.cofaceCount ({k, s}) : 0);
+      return out;
+    };
+    const auto before = state ();
+    detail::WrapFiltration order;
+    detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);
+    std::size_t trials = 0, removed = 0;
+    for (std::size_t j = 0; j < order.sinks.size () && j < 40; ++j)
+    {
+      const detail::Simplex sink = order.sinks[j];
+      log.beginTrial ();
+      if (retraction.deletePrincipal (sink))
+      {
+        retraction.retractFreed ();
+        removed += log.trialRemovals ().size ();
+        ++trials;
+      }
+      log.rollbackTrial (y);
+      ASSERT_EQ (state (), before) << "after the trial on sink " << trials;
+    }
+    EXPECT_GT (trials, 5u);
+    EXPECT_GT (removed, trials); // the retractions after the deletions removed something too
   }
 }
 

@@ -18,6 +18,13 @@ using Point3 = std::array<double, 3>;
 /** \brief Called after each stage with its name and duration, e.g. to show progress. */
 using StageObserver = std::function<void (const std::string& stage, double seconds)>;
 
+/** \brief Throws std::invalid_argument, saying why, when computeWrap() would reject
+  * \a parameters: a NaN or non-positive threshold, a non-finite weight scale, a malformed region,
+  * or a region without front deletion and a size threshold. Lets an application check what a
+  * user asked for before it reads any points. */
+void
+checkParameters (const WrapParameters& parameters);
+
 /** \brief The Wrap construction on plain points: the engine behind pcl_wrap::Wrap.
   *
   * \param[in] points the input points; points with a non-finite coordinate or weight are
@@ -29,7 +36,8 @@ using StageObserver = std::function<void (const std::string& stage, double secon
   * \param[in] parameters see WrapParameters
   * \param[in] observer optional, called after every stage
   * \return the surface W, the complex and statistics, with indices into \a points
-  * \throws std::invalid_argument when \a weights is neither empty nor one per point
+  * \throws std::invalid_argument when \a weights is neither empty nor one per point, or from
+  *         checkParameters()
   */
 WrapResult
 computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights,

@@ -123,16 +123,16 @@ writeFacets (const SimplicialComplex& complex, const FacetsOf& facets_of, Bounda
 } // namespace
 
 Boundary
-extractBoundary (const SimplicialComplex& complex, const Retraction& x)
+extractBoundary (const SimplicialComplex& complex, const Subcomplex& x)
 {
   Boundary w;
   // Facets of X's tetrahedra with one tetrahedron of X, found once (a mask per tetrahedron).
   std::vector<std::uint8_t> facets (complex.size (3), 0);
   parallelForEach (complex.size (3), [&] (std::size_t id) {
     const auto t = static_cast<SimplexId> (id);
-    if (x.inY ({3, t}))
+    if (x.contains ({3, t}))
       for (int i = 0; i < 4; ++i)
-        if (x.cofacesInY (complex.facet (3, t, i)) == 1)
+        if (x.cofaceCount (complex.facet (3, t, i)) == 1)
           facets[t] |= 1u << i;
   });
   writeFacets (complex, [&] (std::size_t t) { return unsigned (facets[t]); }, w);
@@ -142,7 +142,7 @@ extractBoundary (const SimplicialComplex& complex, const Retraction& x)
   const auto principal = [&] (int k) {
     const auto is_principal = [&] (std::size_t s) {
       const Simplex simplex{k, static_cast<SimplexId> (s)};
-      return x.inY (simplex) && x.cofacesInY (simplex) == 0;
+      return x.contains (simplex) && x.cofaceCount (simplex) == 0;
     };
     std::vector<SimplexId> found;
     fillInOrder (

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "filled_in_parallel.h"
-#include "retraction.h"
+#include "subcomplex.h"
 #include "simplicial_complex.h"
 
 #include <pcl_wrap/wrap_result.h>
@@ -27,9 +27,9 @@ struct Boundary
   std::vector<std::uint32_t> isolated_vertices;
 };
 
-/** \brief The boundary of X, the simplices still in Y after \a x has retracted. */
+/** \brief The boundary of the subcomplex \a x (X, or a solid's closure). */
 Boundary
-extractBoundary (const SimplicialComplex& complex, const Retraction& x);
+extractBoundary (const SimplicialComplex& complex, const Subcomplex& x);
 
 /** \brief The boundary of the tetrahedra flagged in \a inside (which have no lower-dimensional
   * parts to leave sheets): the facets between an inside and an outside tetrahedron, or the hull,

@@ -2,6 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "front_deletion.h"
 
+#include "removal_log.h"
+#include "retraction.h"
+
 #include <array>
 #include <set>
 #include <unordered_map>
@@ -73,9 +76,12 @@ private:
 } // namespace
 
 FrontDeletion
-deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapFiltration& order, double delta,
+deleteExposedSinks (Subcomplex& y, const Classification& classification, const WrapFiltration& order, double delta,
                     const std::vector<std::uint8_t>& in_front, std::uint64_t order_seed)
 {
+  const SimplicialComplex& complex = y.complex ();
+  RemovalLog log (complex);
+  Retraction retraction (y, classification, &log);
   // The rank of every sink larger than delta, to find those a trial uncovers.
   constexpr std::uint32_t NOT_CANDIDATE = ~std::uint32_t (0);
   std::array<std::vector<std::uint32_t>, 4> rank;
@@ -94,11 +100,11 @@ deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapF
     progress = false;
     for (std::size_t j = 0; j < candidates; ++j)
     {
-      if (!y.inY (order.sinks[j]) || y.cofacesInY (order.sinks[j]) != 0)
+      if (!y.principal (order.sinks[j]))
         continue;
       // A trial deletes the sink, then, while its basin has not reached the surface, the larger-
       // than-delta sinks it made principal (its cosinks), largest first. All or nothing.
-      y.beginTrial ();
+      log.beginTrial ();
       std::set<std::uint32_t> pending = {static_cast<std::uint32_t> (j)};
       SurfaceWatch surface (complex, in_front);
       std::size_t scanned = 0, deleted = 0;
@@ -107,35 +113,35 @@ deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapF
       {
         const Simplex sink = order.sinks[*pending.begin ()];
         pending.erase (pending.begin ());
-        if (!y.deletePrincipal (sink))
+        if (!retraction.deletePrincipal (sink))
           continue;
         ++deleted;
-        y.retract (order_seed);
-        reached = surface.reached (y.trialRemovals ());
-        for (; scanned < y.trialRemovals ().size (); ++scanned)
+        retraction.retractFreed (order_seed);
+        reached = surface.reached (log.trialRemovals ());
+        for (; scanned < log.trialRemovals ().size (); ++scanned)
         {
-          const Simplex xi = y.trialRemovals ()[scanned];
+          const Simplex xi = log.trialRemovals ()[scanned];
           for (unsigned mask = 1; mask < fullMask (xi.dim); ++mask)
           {
             const Simplex f = complex.face (xi.dim, xi.id, mask);
-            if (rank[f.dim][f.id] != NOT_CANDIDATE && y.inY (f) && y.cofacesInY (f) == 0)
+            if (rank[f.dim][f.id] != NOT_CANDIDATE && y.principal (f))
               pending.insert (rank[f.dim][f.id]);
           }
         }
       }
       if (reached)
       {
-        y.commitTrial ();
+        log.commitTrial ();
         result.deleted += deleted;
         progress = true;
       }
       else
-        y.rollbackTrial ();
+        log.rollbackTrial (y);
     }
   }
   for (std::size_t j = 0; j < candidates; ++j)
-    if (y.inY (order.sinks[j]))
-      ++(y.cofacesInY (order.sinks[j]) == 0 ? result.enclosed : result.not_principal);
+    if (y.contains (order.sinks[j]))
+      ++(y.principal (order.sinks[j]) ? result.enclosed : result.not_principal);
   return result;
 }
 

@@ -2,8 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include "retraction.h"
-#include "simplicial_complex.h"
+#include "classification.h"
+#include "subcomplex.h"
 #include "wrap_filtration.h"
 
 #include <cstddef>
@@ -31,7 +31,7 @@ struct FrontDeletion
   *            vertices are all flagged are the front a basin must reach. Empty: all of W.
   * \param[in] order_seed as for Retraction::retract */
 FrontDeletion
-deleteExposedSinks (const SimplicialComplex& complex, Retraction& y, const WrapFiltration& order, double delta,
+deleteExposedSinks (Subcomplex& y, const Classification& classification, const WrapFiltration& order, double delta,
                     const std::vector<std::uint8_t>& in_front = {}, std::uint64_t order_seed = 0);
 
 } // namespace pcl_wrap::detail

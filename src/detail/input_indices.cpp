@@ -37,7 +37,7 @@ InputIndices::surface (const Boundary& w) const
 
 std::array<SimplexList, 4>
 InputIndices::complex (const SimplicialComplex& complex, const Classification& classification,
-                       const Retraction& x) const
+                       const Subcomplex& x) const
 {
   std::array<SimplexList, 4> lists;
   for (int k = 0; k <= 3; ++k)
@@ -48,7 +48,7 @@ InputIndices::complex (const SimplicialComplex& complex, const Classification& c
     list.in_x.resize (complex.size (k));
     for (SimplexId s = 0; s < complex.size (k); ++s)
     {
-      list.in_x[s] = x.inY ({k, s});
+      list.in_x[s] = x.contains ({k, s});
       for (int i = 0; i <= k; ++i)
         list.vertices.push_back (of_vertex_[complex.vertex (k, s, i)]);
     }

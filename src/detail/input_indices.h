@@ -4,7 +4,7 @@
 
 #include "boundary.h"
 #include "classification.h"
-#include "retraction.h"
+#include "subcomplex.h"
 #include "simplicial_complex.h"
 
 #include <pcl_wrap/wrap_result.h>
@@ -38,7 +38,7 @@ public:
 
   /** \brief The complex in point indices, with each simplex's class and membership in \a x. */
   std::array<SimplexList, 4> complex (const SimplicialComplex& complex, const Classification& classification,
-                                      const Retraction& x) const;
+                                      const Subcomplex& x) const;
 
   /** \brief The same map with every point index i read as \a index (i). */
   InputIndices reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const;

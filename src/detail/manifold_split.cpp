@@ -109,7 +109,7 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
   * these two, then every other way to glue them without crossing. */
 template <class Glue>
 void
-glueAroundEdge (const SimplicialComplex& complex, const Retraction& x, std::uint32_t a, std::uint32_t b,
+glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
                 const std::vector<SimplexId>& tets, const std::vector<std::uint32_t>& faces_here,
                 const std::vector<Face>& faces, unsigned choice, const Glue& glue)
 {
@@ -137,7 +137,7 @@ glueAroundEdge (const SimplicialComplex& complex, const Retraction& x, std::uint
   for (std::size_t i = start, n = 0; n < steps.size (); ++n)
   {
     triangle.push_back (steps[i].triangle_c);
-    gap_in_x.push_back (x.inY ({3, steps[i].tet}));
+    gap_in_x.push_back (x.contains ({3, steps[i].tet}));
     const auto next = std::find_if (steps.begin (), steps.end (), [&] (const Step& s) { return s.c == steps[i].d; });
     if (next == steps.end ())
     {
@@ -159,7 +159,7 @@ glueAroundEdge (const SimplicialComplex& complex, const Retraction& x, std::uint
   const std::size_t m = triangle.size ();
   std::vector<std::uint32_t> around;
   for (std::size_t i = 0; i < m; ++i)
-    if (x.inY ({2, triangle[i]}))
+    if (x.contains ({2, triangle[i]}))
     {
       if (!gap_in_x[(i + m - 1) % m])
         around.push_back (faceOn (triangle[i], b, a));
@@ -221,7 +221,7 @@ edgeKey (std::uint32_t a, std::uint32_t b)
   * Each pinch edge (listed in \a pinch_keys in ascending order) is glued the way \a choice says
   * (see glueAroundEdge). */
 ManifoldSplit
-split (const SimplicialComplex& complex, const Retraction& x, const Boundary& w,
+split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
        const std::vector<unsigned>& choice, std::vector<std::uint64_t>& pinch_keys)
 {
   ManifoldSplit out;
@@ -229,7 +229,7 @@ split (const SimplicialComplex& complex, const Retraction& x, const Boundary& w,
   for (std::size_t i = 0; i < w.triangles.size (); ++i)
   {
     faces.push_back ({w.triangles[i], w.triangle_ids[i], false});
-    if (x.cofacesInY ({2, w.triangle_ids[i]}) == 0)
+    if (x.cofaceCount ({2, w.triangle_ids[i]}) == 0)
     {
       faces.push_back ({{w.triangles[i][0], w.triangles[i][2], w.triangles[i][1]}, w.triangle_ids[i], true});
       ++out.sheet_triangles;
@@ -345,7 +345,7 @@ split (const SimplicialComplex& complex, const Retraction& x, const Boundary& w,
 } // namespace
 
 ManifoldSplit
-splitPinches (const SimplicialComplex& complex, const Retraction& x, const Boundary& w)
+splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w)
 {
   // Gluing across X pulls apart parts of X that touch along an edge; but where X, pulled apart,
   // still meets itself around both ends of the edge (a tunnel sealed at just that edge), the two

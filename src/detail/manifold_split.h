@@ -3,7 +3,7 @@
 #pragma once
 
 #include "boundary.h"
-#include "retraction.h"
+#include "subcomplex.h"
 #include "simplicial_complex.h"
 
 #include <array>
@@ -33,6 +33,6 @@ struct ManifoldSplit
   * of a thickened X, hence a closed oriented 2-manifold.
   * \throws std::logic_error if W is not closed (it always is: docs/design.md §5) */
 ManifoldSplit
-splitPinches (const SimplicialComplex& complex, const Retraction& x, const Boundary& w);
+splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w);
 
 } // namespace pcl_wrap::detail

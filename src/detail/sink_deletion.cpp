@@ -24,7 +24,7 @@ recordSinks (const WrapFiltration& order, WrapStatistics& stats)
 void
 deleteSinks (const SimplicialComplex& complex, const Classification& classification,
              const std::vector<Point3>& positions, const std::vector<double>& weights,
-             const WrapParameters& parameters, const WrapFiltration* ordered, Retraction& y, WrapStatistics& stats)
+             const WrapParameters& parameters, const WrapFiltration* ordered, Subcomplex& y, WrapStatistics& stats)
 {
   WrapFiltration own;
   if (!ordered)
@@ -44,8 +44,9 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
     const auto keep_going = [&] (std::size_t rank, double size) {
       return threshold.kind () == Kind::largest ? rank < threshold.count () : size > stats.delta;
     };
+    Retraction retraction (y, classification);
     stats.sinks_not_principal =
-        deleteSinksGlobally (y, order, keep_going, [] (std::size_t) {}, stats.sinks_deleted);
+        deleteSinksGlobally (retraction, order, keep_going, [] (std::size_t) {}, stats.sinks_deleted);
   }
   else
   {
@@ -53,7 +54,7 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
     if (parameters.region.shape != Region::Shape::everywhere)
       for (const Point3& p : positions)
         in_front.push_back (parameters.region.contains (p));
-    const FrontDeletion front = deleteExposedSinks (complex, y, order, stats.delta, in_front);
+    const FrontDeletion front = deleteExposedSinks (y, classification, order, stats.delta, in_front);
     stats.sinks_deleted = front.deleted;
     stats.sinks_enclosed = front.enclosed;
     stats.sinks_not_principal = front.not_principal;

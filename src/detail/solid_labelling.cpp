@@ -189,7 +189,7 @@ SolidLabelling::castFrom (std::uint32_t t)
 }
 
 void
-SolidLabelling::run (const Retraction* x)
+SolidLabelling::run (const Subcomplex* x)
 {
   while (top_ >= 0)
   {
@@ -211,7 +211,7 @@ SolidLabelling::run (const Retraction* x)
       tied_.push_back (t);
       continue;
     }
-    r.label = r.in > r.out ? INSIDE : r.out > r.in ? OUTSIDE : x->inY ({3, t}) ? INSIDE : OUTSIDE;
+    r.label = r.in > r.out ? INSIDE : r.out > r.in ? OUTSIDE : x->contains ({3, t}) ? INSIDE : OUTSIDE;
     castFrom (t);
   }
 }
@@ -227,13 +227,13 @@ SolidLabelling::flood ()
 }
 
 SolidLabels
-SolidLabelling::labels (const Retraction& x)
+SolidLabelling::labels (const Subcomplex& x)
 {
   // Ties are votes of exactly equal strength, the last the flood reaches: broken by X, and the
   // flood finished from them.
   for (std::uint32_t t : tied_)
   {
-    tets_[t].label = x.inY ({3, t}) ? INSIDE : OUTSIDE;
+    tets_[t].label = x.contains ({3, t}) ? INSIDE : OUTSIDE;
     castFrom (t);
   }
   tied_.clear ();
@@ -243,7 +243,7 @@ SolidLabelling::labels (const Retraction& x)
   SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
   parallelForEach (n, [&] (std::size_t t) {
     const Record& r = tets_[t];
-    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x.inY ({3, static_cast<SimplexId> (t)}));
+    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x.contains ({3, static_cast<SimplexId> (t)}));
     labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
   });
   const bool any_inside = std::find (labels.inside.begin (), labels.inside.end (), 1) != labels.inside.end ();

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "filled_in_parallel.h"
-#include "retraction.h"
+#include "subcomplex.h"
 #include "simplicial_complex.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -52,7 +52,7 @@ public:
   void flood ();
 
   /** \brief The ties broken by \a x, the flood finished, and the labels. Call once, after flood(). */
-  SolidLabels labels (const Retraction& x);
+  SolidLabels labels (const Subcomplex& x);
 
 private:
   /** Per tetrahedron, everything the flood reads and writes, in half a cache line: the flood
@@ -70,7 +70,7 @@ private:
 
   void cast (std::uint32_t t, std::uint8_t side, int vote);
   void castFrom (std::uint32_t t);
-  void run (const Retraction* x); ///< without X, ties are set aside
+  void run (const Subcomplex* x); ///< without X, ties are set aside
 
   FilledInParallel<Record> tets_;
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back

@@ -111,7 +111,7 @@ public:
     });
   }
 
-  SolidRepair run (const Retraction& x)
+  SolidRepair run (const Subcomplex& x)
   {
     SolidRepair done;
     // Most vertices need nothing: find the others on all threads, then mend them in order.
@@ -242,12 +242,12 @@ private:
 
   /** Is tetrahedron \a t in X, or one of its triangles (a sheet of X, where the retraction
     * thinned a part of the solid to zero thickness)? */
-  bool inX (const Retraction& x, std::uint32_t t) const
+  bool inX (const Subcomplex& x, std::uint32_t t) const
   {
-    if (x.inY ({3, t}))
+    if (x.contains ({3, t}))
       return true;
     for (int i = 0; i < 4; ++i)
-      if (x.inY (complex_.facet (3, t, i)))
+      if (x.contains (complex_.facet (3, t, i)))
         return true;
     return false;
   }
@@ -312,7 +312,7 @@ private:
     * to another part moves inside. X is contractible, so a part cut off the solid by the labelling
     * (a thin leg, a horn) is tied to the rest through X; separate objects are not, as X joins them
     * through lower-dimensional simplices only. Returns the tetrahedra moved. */
-  std::vector<std::uint32_t> join (const Retraction& x)
+  std::vector<std::uint32_t> join (const Subcomplex& x)
   {
     const std::size_t n = complex_.size (3);
     std::vector<std::uint32_t> size_of;
@@ -631,7 +631,7 @@ private:
 } // namespace
 
 SolidRepair
-repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Retraction& x,
+repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x,
              SolidLabels& labels)
 {
   if (complex.dimension () != 3)

@@ -32,7 +32,7 @@ struct SolidRepair
   * to the pinch split (splitPinches()).
   * \param[in] neighbours as for SolidLabelling */
 SolidRepair
-repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Retraction& x,
+repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x,
              SolidLabels& labels);
 
 } // namespace pcl_wrap::detail

@@ -5,6 +5,7 @@
 #include "../filtration_data.h"
 #include "manifold_split.h"
 #include "parallel_for_each.h"
+#include "retraction.h"
 #include "sink_deletion.h"
 #include "solid_repair.h"
 
@@ -143,9 +144,9 @@ WrapEngine::classify ()
 void
 WrapEngine::collapse ()
 {
-  // The complex's coface counts become the retraction's, not copied.
-  x_ = std::make_unique<Retraction> (*complex_, *classification_, complex_->releaseCofaceCounts ());
-  result_.statistics.collapses = x_->retract ();
+  // The complex's coface counts become X's, not copied.
+  x_ = std::make_unique<Subcomplex> (*complex_, complex_->releaseCofaceCounts ());
+  result_.statistics.collapses = Retraction (*x_, *classification_).retract ();
 #ifdef PCL_WRAP_CHECK_INVARIANTS
   checkX ();
 #endif
@@ -200,7 +201,7 @@ WrapEngine::extractSurface ()
     w_ = extractSolidBoundary (complex, neighbours_, labels.inside);
   else
   {
-    pinched_solid_ = std::make_unique<Retraction> (complex, *classification_, solidSubcomplex (complex, labels.inside));
+    pinched_solid_ = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
     w_ = extractBoundary (complex, *pinched_solid_);
   }
   neighbours_ = {};
@@ -229,8 +230,7 @@ WrapEngine::report ()
   stats.w_dangling_edges = result_.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result_.surface.isolated_vertices.size ();
   for (int k = 0; k <= 3; ++k)
-    stats.x_simplices[k] =
-        countInParallel (complex.size (k), [&] (std::size_t s) { return x_->inY ({k, static_cast<SimplexId> (s)}); });
+    stats.x_simplices[k] = x_->size (k);
   if (parameters_.keep_complex)
   {
     result_.complex = input_indices_.complex (complex, *classification_, *x_);
@@ -247,20 +247,20 @@ WrapEngine::checkX () const
 {
   const SimplicialComplex& complex = *complex_;
   const Classification& c = *classification_;
-  const Retraction& x = *x_;
+  const Subcomplex& x = *x_;
   for (int k = 0; k <= complex.dimension (); ++k)
     for (SimplexId s = 0; s < complex.size (k); ++s)
     {
       const Simplex v{k, s};
-      if (!x.inY (v))
+      if (!x.contains (v))
         continue;
       for (int i = 0; i <= k && k > 0; ++i)
-        if (!x.inY (complex.facet (k, s, i)))
+        if (!x.contains (complex.facet (k, s, i)))
           throw std::logic_error ("invariant: a simplex of X has a facet outside X");
       if (c.of (v) != SimplexClass::equivocal) // a tetrahedron never is: predecessor[3] is empty
         continue;
       const Simplex tau = c.predecessor[k][s];
-      if (tau.id != NO_SIMPLEX && x.inY (tau) && x.cofacesInY (v) == static_cast<std::uint32_t> (tau.dim - k))
+      if (tau.id != NO_SIMPLEX && x.contains (tau) && x.cofaceCount (v) == static_cast<std::uint32_t> (tau.dim - k))
         throw std::logic_error ("invariant: X still has a free pair of the flow");
     }
 }

@@ -9,7 +9,7 @@
 #include "input_indices.h"
 #include "power_predicates.h"
 #include "regular_triangulation.h"
-#include "retraction.h"
+#include "subcomplex.h"
 #include "simplicial_complex.h"
 #include "solid_labelling.h"
 #include "stage_clock.h"
@@ -74,7 +74,7 @@ public:
   const SimplicialComplex& complex () const { return *complex_; }
   const Classification& classification () const { return *classification_; }
   const PowerPredicates& predicates () const { return *predicates_; }
-  const Retraction& x () const { return *x_; }
+  const Subcomplex& x () const { return *x_; }
   /** \brief Per vertex id: its position and weight. */
   const std::vector<Point3>& vertexPositions () const { return vertex_positions_; }
   const std::vector<double>& vertexWeights () const { return vertex_weights_; }
@@ -104,10 +104,10 @@ private:
   FilledInParallel<std::uint32_t> neighbours_; // the surface stage's walk
   std::unique_ptr<PowerPredicates> predicates_;
   std::shared_ptr<const Classification> classification_;
-  std::unique_ptr<Retraction> x_;
+  std::unique_ptr<Subcomplex> x_;
   std::shared_ptr<const WrapFiltration> filtration_;
   Boundary w_;
-  std::unique_ptr<Retraction> pinched_solid_; // the repaired solid, when a pinch is left to split
+  std::unique_ptr<Subcomplex> pinched_solid_; // the repaired solid, when a pinch is left to split
 };
 
 } // namespace pcl_wrap::detail

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_filtration.h"
 
+#include "removal_log.h"
+#include "retraction.h"
 #include "sink_deletion.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -88,19 +90,21 @@ wrapFiltration (const SimplicialComplex& complex, const Classification& classifi
   orderSinks (complex, classification, positions, weights, f);
 
   // Stamp 1: the basic construction (omega); stamp j + 2: the deletion of sink j.
-  Retraction y (complex, classification);
-  y.stampRemovals (1);
-  y.retract (order_seed);
+  Subcomplex y (complex);
+  RemovalLog log (complex);
+  Retraction retraction (y, classification, &log);
+  log.stampRemovals (1);
+  retraction.retract (order_seed);
   f.not_principal = deleteSinksGlobally (
-      y, f, [] (std::size_t, double) { return true; },
-      [&] (std::size_t j) { y.stampRemovals (static_cast<std::uint32_t> (j + 2)); }, f.deletions, order_seed);
+      retraction, f, [] (std::size_t, double) { return true; },
+      [&] (std::size_t j) { log.stampRemovals (static_cast<std::uint32_t> (j + 2)); }, f.deletions, order_seed);
   constexpr double INF = std::numeric_limits<double>::infinity ();
   for (int k = 0; k <= 3; ++k)
   {
     f.value[k].resize (complex.size (k));
     for (SimplexId s = 0; s < complex.size (k); ++s)
     {
-      const std::uint32_t stamp = y.removalStamp ({k, s});
+      const std::uint32_t stamp = log.stamp ({k, s});
       f.value[k][s] = stamp == 0 ? -INF : stamp == 1 ? INF : f.sink_sizes[stamp - 2];
     }
   }

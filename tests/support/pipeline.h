@@ -70,12 +70,12 @@ public:
   /** X after a retraction in the order drawn from \a seed, as one tuple per simplex. */
   std::vector<Tuple> retractedX (std::uint64_t seed = 0) const
   {
-    detail::Retraction x (complex, classification);
-    x.retract (seed);
+    detail::Subcomplex x (complex);
+    detail::Retraction (x, classification).retract (seed);
     std::vector<Tuple> out;
     for (int k = 0; k <= 3; ++k)
       for (detail::SimplexId s = 0; s < complex.size (k); ++s)
-        if (x.inY ({k, s}))
+        if (x.contains ({k, s}))
           out.push_back (tuple ({k, s}));
     std::sort (out.begin (), out.end ());
     return out;
