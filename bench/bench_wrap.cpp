@@ -3,10 +3,11 @@
 //
 // bench_wrap SHAPE N [SEED [RUNS]]: on the same N points (SHAPE: sphere, cube or torus, or a point
 // file), times and measures the peak memory of CGAL's triangulations alone (the floor any
-// Delaunay-based method pays) and of pcl_wrap, stage by stage. Each measurement runs in a
-// child process of its own, so each peak resident set size is its own. With RUNS > 1 the three
-// take turns RUNS times and each reports its fastest run: this machine's speed drifts by 20-30%
-// over minutes, and taking turns exposes all three to the same drift. The ratio of pcl_wrap to
+// Delaunay-based method pays) and of pcl_wrap, stage by stage: its default output, the raw W,
+// and the raw W of a tighter wrap (--radius-rel 4, front deletion). Each measurement runs in a
+// child process of its own, so each peak resident set size is its own. With RUNS > 1 they
+// take turns RUNS times and each reports its fastest run: a shared machine's speed can drift by
+// 20-30% over minutes, and taking turns exposes them all to the same drift. The ratio of pcl_wrap to
 // the regular triangulation within each turn is printed too: its spread says how far one
 // run's ratio can be trusted. CGAL's parallel Delaunay triangulation (all threads, the lock grid
 // pcl_wrap uses) is timed once more, after the turns: on equal weights pcl_wrap's triangulation
@@ -44,6 +45,7 @@ namespace
 {
 
 using pcl_wrap::Point3;
+constexpr double TIGHTER = 4.0; // the relative radius of the tighter wrap timed (front deletion)
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 struct Measurement
@@ -157,10 +159,12 @@ main (int argc, char** argv)
     CGAL::Delaunay_triangulation_3<K, Tds, CGAL::Default, LockGrid> dt (p.begin (), p.end (), &locks);
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
   };
-  const auto wrapAll = [&] (Measurement& m, pcl_wrap::Output output) {
+  const auto wrapAll = [&] (Measurement& m, pcl_wrap::Output output, double radius_rel) {
     pcl_wrap::WrapParameters parameters;
     parameters.keep_complex = false;
     parameters.output = output;
+    if (radius_rel > 0)
+      parameters.threshold = pcl_wrap::Threshold::relativeRadius (radius_rel);
     const pcl_wrap::WrapResult r = pcl_wrap::computeWrap (points, parameters);
     std::string stages;
     for (const auto& t : r.statistics.timings)
@@ -184,19 +188,22 @@ main (int argc, char** argv)
       warm = std::min (std::max (warm, std::size_t (m.peak_kib) * 1024), available / 2);
     return m;
   };
-  const auto surface = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::surface); };
-  const auto raw = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw); };
-  Measurement delaunay, regular, wrap, wrap_raw;
-  std::vector<double> turn_ratios, raw_ratios;
+  const auto surface = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::surface, 0); };
+  const auto raw = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw, 0); };
+  const auto tighter = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw, TIGHTER); };
+  Measurement delaunay, regular, wrap, wrap_raw, wrap_tighter;
+  std::vector<double> turn_ratios, raw_ratios, tighter_ratios;
   for (int run = 0; run < runs; ++run)
   {
     keepBest (delaunay, measured (delaunayAlone));
-    const Measurement r = measured (regularAlone), w = measured (surface), wr = measured (raw);
+    const Measurement r = measured (regularAlone), w = measured (surface), wr = measured (raw), wt = measured (tighter);
     keepBest (regular, r);
     keepBest (wrap, w);
     keepBest (wrap_raw, wr);
+    keepBest (wrap_tighter, wt);
     turn_ratios.push_back (w.seconds / r.seconds);
     raw_ratios.push_back (w.seconds / wr.seconds);
+    tighter_ratios.push_back (wt.seconds / wr.seconds);
   }
   const Measurement parallel = measured (delaunayParallel);
   const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
@@ -211,12 +218,18 @@ main (int argc, char** argv)
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw W (--raw)", wrap_raw.seconds, wrap_raw.peak_kib / 1024.0,
                wrap_raw.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw, --radius-rel 4", wrap_tighter.seconds,
+               wrap_tighter.peak_kib / 1024.0, wrap_tighter.detail);
   std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
                double (wrap.peak_kib) / double (regular.peak_kib));
   std::printf ("  surface against raw W: time %.2fx (per turn:", wrap.seconds / wrap_raw.seconds);
   for (double r : raw_ratios)
     std::printf (" %.2fx", r);
   std::printf ("), peak memory %.2fx\n", double (wrap.peak_kib) / double (wrap_raw.peak_kib));
+  std::printf ("  --radius-rel 4 against raw W: time %.2fx (per turn:", wrap_tighter.seconds / wrap_raw.seconds);
+  for (double r : tighter_ratios)
+    std::printf (" %.2fx", r);
+  std::printf ("), peak memory %.2fx\n", double (wrap_tighter.peak_kib) / double (wrap_raw.peak_kib));
   if (runs > 1)
   {
     std::printf ("  time ratio within each turn:");

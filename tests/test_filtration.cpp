@@ -14,6 +14,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
@@ -111,6 +112,95 @@ TEST (WrapFiltration, EqualsNaiveDeletionsOnExactClasses)
       }
     }
   EXPECT_GT (compared, 20u);
+}
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+
+/** The sinks of \a p by decreasing exact size, from CGAL's exact constructions (not the engine's
+  * fractions), equal sizes by the sorted coordinates of their vertices; their sizes in \a sizes. */
+std::vector<Simplex>
+sinksInExactOrder (const Pipeline& p, std::vector<ExactKernel::FT>& sizes)
+{
+  using K = ExactKernel;
+  const K::Compute_squared_radius_smallest_orthogonal_sphere_3 radius;
+  struct Sink
+  {
+    Simplex s;
+    K::FT size;
+    std::vector<Point3> corners;
+  };
+  std::vector<Sink> sinks;
+  forEachSimplex (p, [&] (Simplex s) {
+    if (p.classification.of (s) != SimplexClass::centered)
+      return;
+    std::vector<K::Weighted_point_3> w;
+    Sink sink{s, 0, {}};
+    for (int i = 0; i <= s.dim; ++i)
+    {
+      const std::uint32_t v = p.complex.vertex (s.dim, s.id, i);
+      w.emplace_back (K::Point_3 (p.points[v][0], p.points[v][1], p.points[v][2]), p.weights[v]);
+      sink.corners.push_back (p.points[v]);
+    }
+    sink.size = s.dim == 0 ? radius (w[0]) : s.dim == 1 ? radius (w[0], w[1]) : s.dim == 2 ? radius (w[0], w[1], w[2])
+                                                                                            : radius (w[0], w[1], w[2], w[3]);
+    std::sort (sink.corners.begin (), sink.corners.end ());
+    sinks.push_back (sink);
+  });
+  std::sort (sinks.begin (), sinks.end (), [] (const Sink& a, const Sink& b) {
+    if (a.size != b.size)
+      return a.size > b.size;
+    return std::lexicographical_compare (a.corners.begin (), a.corners.end (), b.corners.begin (), b.corners.end ());
+  });
+  std::vector<Simplex> out;
+  sizes.clear ();
+  for (const Sink& sink : sinks)
+  {
+    out.push_back (sink.s);
+    sizes.push_back (sink.size);
+  }
+  return out;
+}
+
+TEST (WrapFiltration, SinksAreInExactOrderAndAnyPrefixIsThePrefixOfTheWholeOrder)
+{
+  // The torus's tube holds many sinks of size 0.4^2 up to rounding, the grid many of exactly equal
+  // sizes, the weighted cube sinks of every dimension: the order cannot come from doubles.
+  std::vector<Point3> grid;
+  for (int x = 0; x < 5; ++x)
+    for (int y = 0; y < 5; ++y)
+      for (int z = 0; z < 4; ++z)
+        grid.push_back ({double (x), double (y), double (z)});
+  const auto cube = cubeSample (400, 3);
+  std::vector<double> weights;
+  for (std::size_t i = 0; i < cube.size (); ++i)
+    weights.push_back (0.002 * double (i % 7));
+  const Pipeline torus (torusSample (3000, 4)), lattice (grid), weighted (cube, weights);
+  for (const Pipeline* p : {&torus, &lattice, &weighted})
+  {
+    detail::WrapFiltration all;
+    detail::orderSinks (p->complex, p->classification, p->points, p->weights, all);
+    std::vector<ExactKernel::FT> sizes;
+    const std::vector<Simplex> expected = sinksInExactOrder (*p, sizes);
+    ASSERT_EQ (all.sinks.size (), expected.size ());
+    EXPECT_EQ (all.sink_count, expected.size ());
+    for (std::size_t j = 0; j < expected.size (); ++j)
+      ASSERT_TRUE (all.sinks[j].dim == expected[j].dim && all.sinks[j].id == expected[j].id) << "rank " << j;
+    // Prefixes: above a size (one of the sizes, so ties straddle it), or at least a count.
+    for (const std::size_t j : {std::size_t (0), expected.size () / 3, expected.size () - 1})
+      for (const std::size_t at_least : {std::size_t (0), std::size_t (10), expected.size () / 2})
+      {
+        const double delta = all.sink_sizes[j];
+        detail::WrapFiltration prefix;
+        detail::orderSinks (p->complex, p->classification, p->points, p->weights, prefix, delta, at_least);
+        std::size_t length = 0;
+        while (length < sizes.size () && (length < at_least || sizes[length] > delta))
+          ++length;
+        ASSERT_EQ (prefix.sinks.size (), length) << "delta " << delta << " at least " << at_least;
+        EXPECT_EQ (prefix.sink_count, all.sink_count);
+        for (std::size_t i = 0; i < length; ++i)
+          ASSERT_TRUE (prefix.sinks[i].dim == all.sinks[i].dim && prefix.sinks[i].id == all.sinks[i].id);
+      }
+  }
 }
 
 TEST (WrapFiltration, EverySinkIsPrincipalAtItsTurnAndOrderDoesNotMatter)

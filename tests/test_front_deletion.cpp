@@ -3,6 +3,7 @@
 //
 // Front deletion, "wrap tighter" (docs/design.md §6): sinks larger than delta go only when their
 // basin reaches the surface, so tunnels open and no cavity is ever carved.
+#include "support/front_checks.h"
 #include "support/pipeline.h"
 #include "support/samplers.h"
 #include "support/topology.h"
@@ -164,6 +165,21 @@ TEST (FrontDeletion, NeverCarvesACavityWhereGlobalDeletionDoes)
     for (SimplexId s = 0; s < cavity.complex.size (k); ++s)
       in_x[k].push_back (f.inX ({k, s}, 0.05));
   EXPECT_FALSE (everyEmptyTetrahedronReachesOutside (cavity, Subcomplex (cavity.complex, in_x)));
+}
+
+TEST (FrontDeletion, NoSinkLeftAboveDeltaCouldReachTheSurface)
+{
+  const Pipeline torus (torusSample (3000, 5));
+  const Pipeline sphere (sphereSample (3000, 6, 0.05));
+  const Pipeline two (doubleTorusSample (2400, 2));
+  std::size_t tried = 0;
+  for (const auto* p : {&torus, &sphere, &two})
+    for (double delta : {0.2, 0.05, 0.01})
+    {
+      SCOPED_TRACE ("delta " + std::to_string (delta));
+      tried += expectFrontDeletionIsAFixpoint (*p, delta);
+    }
+  EXPECT_GT (tried, 50u);
 }
 
 TEST (FrontDeletion, IndependentOfTheOrderOfCollapses)

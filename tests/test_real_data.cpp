@@ -3,6 +3,8 @@
 //
 // Real data from Debian's libcgal-demo: the Stanford bunny (vertices of a closed scan), the
 // kitten scan and the fandisk CAD model (full of exact ties the perturbation decides).
+#include "support/front_checks.h"
+#include "support/pipeline.h"
 #include "support/topology.h"
 #include "support/wrap_checks.h"
 
@@ -51,6 +53,21 @@ TEST (RealData, KittenScanAndFandiskModelKeepTheInvariants)
     if (name == "fandisk.off")
       EXPECT_GT (r.statistics.perturbations, 0u) << "the CAD model has exact ties";
   }
+}
+
+TEST (RealData, FrontDeletionOnTheCowLeavesNoSinkThatCouldReachTheSurface)
+{
+  // On the cow, trials that stay inside at first reach the surface after later deletions: the
+  // deletion must try them again, and the end state must be a fixpoint.
+  const auto points = load ("cow.off");
+  const Pipeline cow (points);
+  std::size_t tried = 0;
+  for (const double k : {2.0, 3.0, 4.0})
+  {
+    SCOPED_TRACE ("radius-rel " + std::to_string (k));
+    tried += expectFrontDeletionIsAFixpoint (cow, std::pow (k * medianSpacing (points), 2));
+  }
+  EXPECT_GT (tried, 0u);
 }
 
 TEST (RealData, BunnyQuantisedToAMillimetreGridKeepsTheInvariants)

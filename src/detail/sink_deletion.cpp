@@ -16,9 +16,9 @@ namespace pcl_wrap::detail
 void
 recordSinks (const WrapFiltration& order, WrapStatistics& stats)
 {
-  stats.sinks = order.sinks.size ();
+  stats.sinks = order.sink_count;
   stats.largest_sinks.assign (order.sink_sizes.begin (),
-                              order.sink_sizes.begin () + std::min<std::size_t> (10, order.sink_sizes.size ()));
+                              order.sink_sizes.begin () + std::min (LARGEST_SINKS_REPORTED, order.sink_sizes.size ()));
 }
 
 void
@@ -26,11 +26,6 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
              const std::vector<Point3>& positions, const std::vector<double>& weights,
              const WrapParameters& parameters, const WrapFiltration* ordered, Subcomplex& y, WrapStatistics& stats)
 {
-  WrapFiltration own;
-  if (!ordered)
-    orderSinks (complex, classification, positions, weights, own);
-  const WrapFiltration& order = ordered ? *ordered : own;
-  recordSinks (order, stats);
   stats.spacing = complex.size (1) == 0 ? 0.0
                                          : medianNearestNeighbourDistance (complex.vertices (1, 0), complex.size (1), 1, positions);
   const Threshold& threshold = parameters.threshold;
@@ -38,6 +33,14 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
   stats.delta = threshold.kind () == Kind::relative_radius ? std::pow (threshold.value () * stats.spacing, 2)
               : threshold.kind () == Kind::size         ? threshold.value ()
                                                         : std::numeric_limits<double>::infinity ();
+  // Without the filtration, only the sinks a deletion may look at are ordered: those above
+  // delta, or the count largest, and the largest few for the statistics.
+  WrapFiltration own;
+  if (!ordered)
+    orderSinks (complex, classification, positions, weights, own, stats.delta,
+                std::max (LARGEST_SINKS_REPORTED, threshold.kind () == Kind::largest ? threshold.count () : 0));
+  const WrapFiltration& order = ordered ? *ordered : own;
+  recordSinks (order, stats);
 
   if (parameters.deletion == SinkDeletion::global || threshold.kind () == Kind::largest)
   {

@@ -41,6 +41,9 @@ deleteSinksGlobally (Retraction& retraction, const WrapFiltration& order, const 
   return not_principal;
 }
 
+/** \brief How many of the largest sink sizes WrapStatistics::largest_sinks holds. */
+constexpr std::size_t LARGEST_SINKS_REPORTED = 10;
+
 /** \brief The number of sinks and the largest sizes, from sinks in order, into \a stats. */
 void
 recordSinks (const WrapFiltration& order, WrapStatistics& stats);

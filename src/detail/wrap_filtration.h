@@ -24,9 +24,11 @@ struct WrapFiltration
 {
   /** \brief The sinks other than omega by decreasing size (exact order; equal sizes in
     * lexicographic order of their vertices' coordinates), and their sizes (squared radii of
-    * their smallest orthospheres, rounded). */
+    * their smallest orthospheres, rounded, non-increasing). */
   std::vector<Simplex> sinks;
   std::vector<double> sink_sizes;
+  /** \brief The number of sinks other than omega, including those orderSinks() left out. */
+  std::size_t sink_count = 0;
   /** \brief Per simplex: +inf when the basic construction (omega) removed it, the size of the
     * sink whose deletion removed it, or -inf when nothing did. */
   std::array<std::vector<double>, 4> value;
@@ -43,10 +45,14 @@ struct WrapFiltration
 };
 
 /** \brief Orders the sinks of \a classification by decreasing size (vertex ids of \a complex
-  * index \a positions and \a weights). */
+  * index \a positions and \a weights) into \a filtration: all of them, or only a prefix of that
+  * order: the sinks larger than \a larger_than, and at least the \a at_least largest. Every size
+  * is first bounded in interval arithmetic, on all threads; only the sinks that may belong to the
+  * prefix are sized exactly and sorted. */
 void
 orderSinks (const SimplicialComplex& complex, const Classification& classification,
-            const std::vector<Point3>& positions, const std::vector<double>& weights, WrapFiltration& filtration);
+            const std::vector<Point3>& positions, const std::vector<double>& weights, WrapFiltration& filtration,
+            double larger_than = -std::numeric_limits<double>::infinity (), std::size_t at_least = 0);
 
 /** \brief The wrap filtration. \a order_seed as for Retraction::retract. */
 WrapFiltration
