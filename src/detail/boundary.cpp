@@ -5,7 +5,10 @@
 #include "parallel_for_each.h"
 #include "regular_triangulation.h"
 
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
+#include <array>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -42,8 +45,11 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
     for (unsigned mask : {3u, 5u, 6u})
       edge_uses.emplace_back (complex.face (2, sheet[i], mask).id, i);
   }
-  std::sort (edge_uses.begin (), edge_uses.end ());
-  std::vector<std::vector<std::uint32_t>> neighbours (sheet.size ());
+  tbb::parallel_sort (edge_uses.begin (), edge_uses.end ());
+  // At most one neighbour across each of a triangle's three edges: a flat array, not a list each.
+  constexpr std::uint32_t NONE = ~std::uint32_t (0);
+  std::vector<std::array<std::uint32_t, 3>> neighbours (sheet.size (), {NONE, NONE, NONE});
+  const auto link = [&] (std::uint32_t i, std::uint32_t j) { *std::find (neighbours[i].begin (), neighbours[i].end (), NONE) = j; };
   for (std::size_t a = 0; a < edge_uses.size ();)
   {
     std::size_t b = a;
@@ -51,8 +57,8 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
       ++b;
     if (b - a == 2)
     {
-      neighbours[edge_uses[a].second].push_back (edge_uses[a + 1].second);
-      neighbours[edge_uses[a + 1].second].push_back (edge_uses[a].second);
+      link (edge_uses[a].second, edge_uses[a + 1].second);
+      link (edge_uses[a + 1].second, edge_uses[a].second);
     }
     a = b;
   }
@@ -71,7 +77,7 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
       const Triangle& t = out[first + i];
       for (std::uint32_t j : neighbours[i])
       {
-        if (done[j])
+        if (j == NONE || done[j])
           continue;
         done[j] = 1;
         Triangle& n = out[first + j];

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <memory>
+#include <new>
 #include <set>
 #include <unordered_map>
 
@@ -35,10 +38,14 @@ public:
     seen_ = 0;
     if (complex_.dimension () < 3)
       return;
-    if (counts_[0].empty () || ++trial_ == MAX_TRIAL)
+    if (!counts_[0] || ++trial_ == MAX_TRIAL)
     {
+      // calloc: a large block comes as fresh zero pages, not written here, so only the pages
+      // that trials touch cost anything.
       for (int k = 0; k < 3; ++k)
-        counts_[k].assign (complex_.size (k), 0);
+        counts_[k] = Counts (static_cast<std::uint32_t*> (std::calloc (complex_.size (k) + 1, sizeof (std::uint32_t))));
+      if (!counts_[0] || !counts_[1] || !counts_[2])
+        throw std::bad_alloc ();
       trial_ = 1;
     }
   }
@@ -89,8 +96,13 @@ private:
 
   const SimplicialComplex& complex_;
   const std::vector<std::uint8_t>& in_front_;
+  struct Free
+  {
+    void operator() (std::uint32_t* p) const { std::free (p); }
+  };
+  using Counts = std::unique_ptr<std::uint32_t[], Free>;
   // Per simplex of dimension 0-2: (trial << 2) | its cofaces removed in that trial, at most 3.
-  std::array<std::vector<std::uint32_t>, 3> counts_;
+  std::array<Counts, 3> counts_;
   std::uint32_t trial_ = 0;
   std::size_t seen_ = 0;
 };

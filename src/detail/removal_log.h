@@ -37,6 +37,8 @@ public:
   void beginTrial ()
   {
     trial_.clear ();
+    if (trial_.capacity () == 0) // room for every simplex: pages are touched only as it fills
+      trial_.reserve (complex_.size (0) + complex_.size (1) + complex_.size (2) + complex_.size (3));
     in_trial_ = true;
   }
   /** \brief The simplices removed since beginTrial(), in removal order. */

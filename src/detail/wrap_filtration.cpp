@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -202,6 +203,8 @@ orderSinks (const SimplicialComplex& complex, const Classification& classificati
   // the middle of its bounds, lowered where needed to keep the reported sizes non-increasing
   // (bounds that overlap can have their middles the other way round).
   const auto larger = [&] (std::size_t i) {
+    if (!std::isfinite (larger_than)) // every size is above -inf, none above +inf
+      return larger_than < 0;
     if (bounds[i].inf () > larger_than || !(bounds[i].sup () > larger_than))
       return bounds[i].inf () > larger_than;
     if (!exact[i])

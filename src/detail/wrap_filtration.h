@@ -3,7 +3,6 @@
 #pragma once
 
 #include "classification.h"
-#include "retraction.h"
 #include "simplicial_complex.h"
 
 #include <pcl_wrap/compute_wrap.h>
