@@ -50,10 +50,11 @@ intervalSize (const SimplicialComplex& complex, Simplex s, const std::vector<Poi
   }
 }
 
-/** The same size, exactly, as a fraction num / den (den > 0), in multiprecision floats: ring operations only,
-  * no gcd, so it is cheap enough to order thousands of nearly equal sizes. With q_i = p_i - p_0,
-  * G their Gram matrix and r_i = |q_i|^2 - w_i + w_0, the centre p_0 + sum l_j q_j of the smallest
-  * orthosphere has 2 G l = r, and its squared radius is r' adj(G) r / (4 det G) - w_0. */
+/** The same size, exactly, as a fraction num / den (den > 0), in multiprecision floats: ring
+  * operations only, no gcd, so it is cheap enough to order thousands of nearly equal sizes. With
+  * q_i = p_i - p_0, G their Gram matrix and r_i = |q_i|^2 - w_i + w_0, the centre
+  * p_0 + sum l_j q_j of the smallest orthosphere has 2 G l = r, and its squared radius is
+  * r' adj(G) r / (4 det G) - w_0. */
 struct SizeFraction
 {
   CGAL::Mpzf num, den;
