@@ -214,6 +214,33 @@ checkAsciiData (std::ifstream& in, std::uint64_t start, const Fail& bad)
       bad ("data line " + std::to_string (number) + ": not a number");
 }
 
+/** PCL's PCD reader goes on parsing header lines after DATA, skipping blank lines and comments,
+  * until a line that is no keyword: binary data that starts with one (found by fuzzing) would
+  * redefine the fields after they were checked. Does the data from \a in on start so? */
+bool
+dataReadsAsHeader (std::ifstream& in)
+{
+  static const char* const KEYWORDS[] = {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                         "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+  std::string line;
+  while (std::getline (in, line))
+  {
+    if (line.empty ())
+      continue;
+    std::istringstream words (line);
+    std::string first;
+    if (!(words >> first))
+      return false; // PCL stops at a line of blanks
+    if (first[0] == '#')
+      continue;
+    for (const char* keyword : KEYWORDS)
+      if (first.compare (0, std::strlen (keyword), keyword) == 0)
+        return true;
+    return false;
+  }
+  return false;
+}
+
 /** PCL's PCD reader trusts the header and corrupts memory on a malformed one (found by
   * fuzzing): check the header strictly, and the data size it declares against the file, before
   * handing the file over. */
@@ -285,6 +312,9 @@ checkPcdHeader (const std::string& path)
     bad ("POINTS is not WIDTH x HEIGHT");
   const std::string& data = header["DATA"][0];
   const std::uint64_t start = static_cast<std::uint64_t> (in.tellg ());
+  if (dataReadsAsHeader (in))
+    bad ("the data starts with a header keyword, which PCL's reader would parse as a header line");
+  in.clear ();
   in.seekg (0, std::ios::end);
   const std::uint64_t available = static_cast<std::uint64_t> (in.tellg ()) - start;
   if (data == "binary")
@@ -356,6 +386,8 @@ checkPlyHeader (const std::string& path)
   std::uint64_t available = static_cast<std::uint64_t> (in.tellg ()) - start;
   for (const auto& [count, least] : elements)
   {
+    if (least == 0 && count > 0) // PCL's reader loops over its items all the same (found by fuzzing)
+      bad ("an element with items but no properties");
     if (least > 0 && count > available / least)
       bad ("the header declares more data than the file holds");
     available -= count * least;

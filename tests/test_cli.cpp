@@ -189,6 +189,7 @@ malformedFiles ()
       {"garbage.ply", ply + "0 0 0\n1 x 0\n0 1 0\n"},
       {"huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
                          "property float z\nend_header\n0 0 0\n"},
+      {"no_properties.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 99999999999993\nend_header\n"},
       {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
       {"empty.pcd", ""},
       {"junk.pcd", junk},
@@ -199,6 +200,8 @@ malformedFiles ()
       {"count.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 5\nDATA ascii\n"},
       {"huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2000000000\nHEIGHT 1\n"
                    "POINTS 2000000000\nDATA binary\n\x01\x02"},
+      {"keyword_data.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
+                           "POINTS 3\nDATA binary\nCOLUMNS y x z\n" + std::string (40, '0')}, // PCL: y and x swapped
       {"points.las", "1 2 3\n"},
   };
 }
