@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -76,6 +77,17 @@ TEST (Retraction, FirstRetractionOnAllThreadsEqualsOneOrderOnOneThread)
   }
 }
 
+/** Per simplex of every dimension: 0 outside \a y, else 1 + its coface count in \a y. */
+std::vector<std::uint32_t>
+membershipAndCounts (const detail::Subcomplex& y)
+{
+  std::vector<std::uint32_t> out;
+  for (int k = 0; k <= 3; ++k)
+    for (SimplexId s = 0; s < y.complex ().size (k); ++s)
+      out.push_back (y.contains ({k, s}) ? 1 + y.cofaceCount ({k, s}) : 0);
+  return out;
+}
+
 TEST (Retraction, RolledBackTrialsLeaveYAsItWas)
 {
   // A front deletion's trial deletes sinks and retracts, then may put everything back: Y and
@@ -87,14 +99,7 @@ TEST (Retraction, RolledBackTrialsLeaveYAsItWas)
     detail::RemovalLog log (p.complex);
     detail::Retraction retraction (y, p.classification, &log);
     retraction.retract ();
-    const auto state = [&] {
-      std::vector<std::uint32_t> out;
-      for (int k = 0; k <= 3; ++k)
-        for (SimplexId s = 0; s < p.complex.size (k); ++s)
-          out.push_back (y.contains ({k, s}) ? 1 + y.cofaceCount ({k, s}) : 0);
-      return out;
-    };
-    const auto before = state ();
+    const auto before = membershipAndCounts (y);
     detail::WrapFiltration order;
     detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);
     std::size_t trials = 0, removed = 0;
@@ -109,11 +114,46 @@ TEST (Retraction, RolledBackTrialsLeaveYAsItWas)
         ++trials;
       }
       log.rollbackTrial (y);
-      ASSERT_EQ (state (), before) << "after the trial on sink " << trials;
+      ASSERT_EQ (membershipAndCounts (y), before) << "after the trial on sink " << trials;
     }
     EXPECT_GT (trials, 5u);
     EXPECT_GT (removed, trials); // the retractions after the deletions removed something too
   }
+}
+
+TEST (Retraction, LongFreedRetractionOnAllThreadsEqualsOneOrderOnOneThread)
+{
+  // Deleting the largest sink of a sphere sample frees the whole inside: that retraction goes on
+  // all threads once it is long, sharing one basin, and logs its trial from every thread. Y, the
+  // coface counts and the set of logged removals must be those of one thread in a random order,
+  // and putting the trial back must restore Y. Repeated, as a race would show only sometimes.
+  const Pipeline p (sphereSample (20000, 14, 0.001));
+  detail::WrapFiltration order;
+  detail::orderSinks (p.complex, p.classification, p.points, p.weights, order, 0.0, 1);
+  ASSERT_FALSE (order.sinks.empty ());
+  const auto run = [&] (std::uint64_t seed) {
+    detail::Subcomplex y (p.complex);
+    detail::RemovalLog log (p.complex);
+    detail::Retraction retraction (y, p.classification, &log);
+    retraction.retract ();
+    const auto before = membershipAndCounts (y);
+    log.beginTrial ();
+    EXPECT_TRUE (retraction.deletePrincipal (order.sinks[0]));
+    retraction.retractFreed (seed);
+    std::vector<std::pair<int, SimplexId>> removed;
+    for (const detail::Simplex s : log.trialRemovals ())
+      removed.emplace_back (s.dim, s.id);
+    std::sort (removed.begin (), removed.end ());
+    EXPECT_TRUE (std::adjacent_find (removed.begin (), removed.end ()) == removed.end ()) << "a removal logged twice";
+    const auto after = membershipAndCounts (y);
+    log.rollbackTrial (y);
+    EXPECT_EQ (membershipAndCounts (y), before) << "the trial was not put back";
+    return std::make_pair (after, removed);
+  };
+  const auto one_thread = run (5);
+  EXPECT_GT (one_thread.second.size (), 20000u) << "too short a retraction to go on all threads";
+  for (int attempt = 0; attempt < 3; ++attempt)
+    EXPECT_EQ (run (0), one_thread) << "attempt " << attempt;
 }
 
 /** Every W triangle with a tetrahedron of X behind it has that tetrahedron on its negative side. */

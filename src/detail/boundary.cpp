@@ -37,14 +37,15 @@ void
 orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sheet, std::vector<Triangle>& out)
 {
   const std::size_t first = out.size ();
-  std::vector<std::pair<SimplexId, std::uint32_t>> edge_uses; // (edge id, index in sheet)
-  for (std::uint32_t i = 0; i < sheet.size (); ++i)
-  {
+  out.resize (first + sheet.size ());
+  std::vector<std::pair<SimplexId, std::uint32_t>> edge_uses (3 * sheet.size ()); // (edge id, index in sheet)
+  parallelForEach (sheet.size (), [&] (std::size_t i) {
     const std::uint32_t* v = complex.vertices (2, sheet[i]);
-    out.push_back ({v[0], v[1], v[2]});
+    out[first + i] = {v[0], v[1], v[2]};
+    int k = 0;
     for (unsigned mask : {3u, 5u, 6u})
-      edge_uses.emplace_back (complex.face (2, sheet[i], mask).id, i);
-  }
+      edge_uses[3 * i + k++] = {complex.face (2, sheet[i], mask).id, static_cast<std::uint32_t> (i)};
+  });
   tbb::parallel_sort (edge_uses.begin (), edge_uses.end ());
   // At most one neighbour across each of a triangle's three edges: a flat array, not a list each.
   constexpr std::uint32_t NONE = ~std::uint32_t (0);

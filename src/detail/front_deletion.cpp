@@ -2,14 +2,16 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "front_deletion.h"
 
+#include "parallel_for_each.h"
+#include "portable.h"
 #include "removal_log.h"
 #include "retraction.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
 #include <array>
-#include <cstdlib>
-#include <memory>
-#include <new>
 #include <set>
 #include <unordered_map>
 
@@ -18,71 +20,55 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** Watches a trial's removals for one that was on the front (W, or the part of it on flagged
-  * vertices) just before the trial: in a 3-dimensional complex, a triangle with fewer than two
-  * tetrahedra of X, an edge with no triangle, a vertex with no edge (in lower dimensions
-  * everything is on W). A removed simplex's cofaces leave in the same step or earlier (Y stays a
-  * complex), so counting them among the removals tells how many it had, and once a step is over
-  * only the new removals need a look. The counts live in flat arrays, tagged with the trial they
-  * belong to, so a new trial starts without clearing them. */
+/** Tells whether a trial removed a simplex of the front (W, or the part of it on flagged
+  * vertices) as it was just before the trial: in a 3-dimensional complex, a triangle with fewer
+  * than two tetrahedra, an edge with no triangle, a vertex with no edge (in lower dimensions,
+  * everything). One byte per simplex says whether it is on the front; a kept trial changes the
+  * coface counts of the facets of what it removed only, and a trial put back changes nothing. */
 class SurfaceWatch
 {
 public:
-  SurfaceWatch (const SimplicialComplex& complex, const std::vector<std::uint8_t>& in_front)
-    : complex_ (complex), in_front_ (in_front)
-  {}
-
-  /** Forgets the removals of the last trial. */
-  void beginTrial ()
+  SurfaceWatch (const Subcomplex& y, const std::vector<std::uint8_t>& in_front)
+    : y_ (y), complex_ (y.complex ()), in_front_ (in_front)
   {
-    seen_ = 0;
-    if (complex_.dimension () < 3)
-      return;
-    if (!counts_[0] || ++trial_ == MAX_TRIAL)
+    for (int k = 0; k <= std::min (2, complex_.dimension ()); ++k)
     {
-      // calloc: a large block comes as fresh zero pages, not written here, so only the pages
-      // that trials touch cost anything.
-      for (int k = 0; k < 3; ++k)
-        counts_[k] = Counts (static_cast<std::uint32_t*> (std::calloc (complex_.size (k) + 1, sizeof (std::uint32_t))));
-      if (!counts_[0] || !counts_[1] || !counts_[2])
-        throw std::bad_alloc ();
-      trial_ = 1;
+      on_front_[k].resize (complex_.size (k));
+      parallelForEach (complex_.size (k), [&] (std::size_t s) { on_front_[k][s] = onFront ({k, static_cast<SimplexId> (s)}); });
     }
   }
 
-  /** Looks at the removals it has not seen; true when one of them was on the front. */
+  void beginTrial () { seen_ = 0; }
+
+  /** Looks at the trial's removals it has not seen; true when one of them was on the front. */
   bool reached (const std::vector<Simplex>& removed)
   {
-    if (complex_.dimension () < 3)
-    {
-      for (; seen_ < removed.size (); ++seen_)
-        if (inRegion (removed[seen_]))
-          return true;
-      return false;
-    }
     const std::size_t first = seen_;
-    for (; seen_ < removed.size (); ++seen_)
-      for (int i = 0; i <= removed[seen_].dim && removed[seen_].dim > 0; ++i)
-      {
-        const Simplex f = complex_.facet (removed[seen_].dim, removed[seen_].id, i);
-        std::uint32_t& c = counts_[f.dim][f.id];
-        c = (c >> 2) == trial_ ? std::min (c + 1, (trial_ << 2) | 3) : (trial_ << 2) | 1;
-      }
-    for (std::size_t k = first; k < removed.size (); ++k)
+    seen_ = removed.size ();
+    return countInParallel (seen_ - first, [&] (std::size_t i) {
+             const Simplex s = removed[first + i];
+             return s.dim < 3 && on_front_[s.dim][s.id] != 0;
+           }) != 0;
+  }
+
+  /** A kept trial removed \a xi; called on several threads at once. */
+  void kept (Simplex xi)
+  {
+    for (int j = 0; j <= xi.dim && xi.dim > 0; ++j)
     {
-      const Simplex xi = removed[k];
-      if (xi.dim == 3 || !inRegion (xi))
-        continue;
-      const std::uint32_t c = counts_[xi.dim][xi.id];
-      const std::uint32_t before = (c >> 2) == trial_ ? (c & 3) : 0;
-      if (before < (xi.dim == 2 ? 2u : 1u))
-        return true;
+      const Simplex f = complex_.facet (xi.dim, xi.id, j);
+      if (f.dim < 3 && y_.contains (f)) // facets shared by removals get the same value
+        relaxedStore (&on_front_[f.dim][f.id], std::uint8_t (onFront (f)));
     }
-    return false;
   }
 
 private:
-  static constexpr std::uint32_t MAX_TRIAL = 1u << 30;
+  bool onFront (Simplex s) const
+  {
+    if (!y_.contains (s) || !inRegion (s))
+      return false;
+    return complex_.dimension () < 3 || y_.cofaceCount (s) < (s.dim == 2 ? 2u : 1u);
+  }
 
   bool inRegion (Simplex s) const
   {
@@ -94,16 +80,10 @@ private:
     return true;
   }
 
+  const Subcomplex& y_;
   const SimplicialComplex& complex_;
   const std::vector<std::uint8_t>& in_front_;
-  struct Free
-  {
-    void operator() (std::uint32_t* p) const { std::free (p); }
-  };
-  using Counts = std::unique_ptr<std::uint32_t[], Free>;
-  // Per simplex of dimension 0-2: (trial << 2) | its cofaces removed in that trial, at most 3.
-  std::array<Counts, 3> counts_;
-  std::uint32_t trial_ = 0;
+  std::array<std::vector<std::uint8_t>, 3> on_front_; // per simplex of dimension 0-2
   std::size_t seen_ = 0;
 };
 
@@ -141,13 +121,15 @@ public:
     failures_.back ().end = vertices_.size ();
   }
 
-  /** A trial reached the front: its removals are kept. */
-  void committed (const SimplicialComplex& complex, const std::vector<Simplex>& removed)
+  /** A trial reached the front: its removals are kept, each told to kept() if watching(). */
+  void committed () { ++commits_; }
+  /** Only failures before a commit read what it touched. */
+  bool watching () const { return !failures_.empty (); }
+  /** A kept trial removed \a xi; called on several threads at once. */
+  void kept (const SimplicialComplex& complex, Simplex xi)
   {
-    ++commits_;
-    for (const Simplex xi : removed)
-      for (int i = 0; i <= xi.dim; ++i)
-        touched_at_[complex.vertex (xi.dim, xi.id, i)] = commits_;
+    for (int i = 0; i <= xi.dim; ++i)
+      relaxedStore (&touched_at_[complex.vertex (xi.dim, xi.id, i)], commits_);
   }
 
   bool ruledOut (std::size_t candidate)
@@ -172,17 +154,44 @@ private:
   static constexpr std::uint32_t NONE = ~std::uint32_t (0);
   struct Failure
   {
-    std::size_t commits;    // commits before it, or before it was last found to hold
+    std::uint32_t commits;  // commits before it, or before it was last found to hold
     std::size_t begin, end; // its removals' vertices in vertices_
   };
 
   std::vector<std::uint32_t> failure_of_; // per candidate: the failure that rules it out, or NONE
   std::vector<Failure> failures_;
   std::vector<std::uint32_t> vertices_;
-  std::vector<std::size_t> touched_at_;   // per vertex: the last commit that removed a simplex on it
+  std::vector<std::uint32_t> touched_at_; // per vertex: the last commit that removed a simplex on it
   std::vector<std::uint32_t> listed_by_;  // per vertex: the last failure that listed it
-  std::size_t commits_ = 0;
+  std::uint32_t commits_ = 0;
 };
+
+/** The ranks (\a rank gives them, or null) of the simplices that removed[from, end) left
+  * principal, found on all threads. A cosink's last coface one dimension up leaves in the trial:
+  * facets suffice. */
+template <class Rank>
+std::vector<std::uint32_t>
+uncoveredSinks (const Subcomplex& y, const std::vector<Simplex>& removed, std::size_t from, const Rank& rank)
+{
+  const SimplicialComplex& complex = y.complex ();
+  return tbb::parallel_reduce (
+      tbb::blocked_range<std::size_t> (from, removed.size (), 4096), std::vector<std::uint32_t> (),
+      [&] (const tbb::blocked_range<std::size_t>& range, std::vector<std::uint32_t> found) {
+        for (std::size_t k = range.begin (); k != range.end (); ++k)
+          for (int i = 0; i <= removed[k].dim && removed[k].dim > 0; ++i)
+          {
+            const Simplex f = complex.facet (removed[k].dim, removed[k].id, i);
+            if (y.principal (f))
+              if (const std::uint32_t* r = rank (f))
+                found.push_back (*r);
+          }
+        return found;
+      },
+      [] (std::vector<std::uint32_t> a, const std::vector<std::uint32_t>& b) {
+        a.insert (a.end (), b.begin (), b.end ());
+        return a;
+      });
+}
 
 } // namespace
 
@@ -211,7 +220,7 @@ deleteExposedSinks (Subcomplex& y, const Classification& classification, const W
   };
 
   StayedInside inside (candidates, complex.size (0));
-  SurfaceWatch surface (complex, in_front);
+  SurfaceWatch surface (y, in_front);
   FrontDeletion result;
   for (bool progress = true; progress;)
   {
@@ -236,22 +245,23 @@ deleteExposedSinks (Subcomplex& y, const Classification& classification, const W
         ++deleted;
         retraction.retractFreed (order_seed);
         reached = surface.reached (log.trialRemovals ());
-        for (; scanned < log.trialRemovals ().size () && !reached; ++scanned)
+        if (!reached)
         {
-          // A cosink's last coface one dimension up leaves in the trial: look at facets only.
-          const Simplex xi = log.trialRemovals ()[scanned];
-          for (int i = 0; i <= xi.dim && xi.dim > 0; ++i)
-          {
-            const Simplex f = complex.facet (xi.dim, xi.id, i);
-            if (y.principal (f))
-              if (const std::uint32_t* r = rank (f))
-                pending.insert (*r);
-          }
+          const std::vector<std::uint32_t> cosinks = uncoveredSinks (y, log.trialRemovals (), scanned, rank);
+          pending.insert (cosinks.begin (), cosinks.end ());
+          scanned = log.trialRemovals ().size ();
         }
       }
       if (reached)
       {
-        inside.committed (complex, log.trialRemovals ());
+        inside.committed ();
+        const std::vector<Simplex>& removed = log.trialRemovals ();
+        const bool watching = inside.watching ();
+        parallelForEach (removed.size (), [&] (std::size_t i) {
+          if (watching)
+            inside.kept (complex, removed[i]);
+          surface.kept (removed[i]);
+        });
         log.commitTrial ();
         result.deleted += deleted;
         progress = true;

@@ -19,6 +19,19 @@ RemovalLog::rollbackTrial (Subcomplex& y)
 }
 
 void
+RemovalLog::recordConcurrently (const std::vector<Simplex>& removed)
+{
+  if (stamp_ != 0)
+    for (const Simplex s : removed)
+      stamps_[s.dim][s.id] = stamp_; // a simplex is removed once: no other thread writes it
+  if (in_trial_)
+  {
+    const std::lock_guard<std::mutex> lock (trial_mutex_);
+    trial_.insert (trial_.end (), removed.begin (), removed.end ());
+  }
+}
+
+void
 RemovalLog::stampRemovals (std::uint32_t stamp)
 {
   if (stamps_[0].empty ())

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -29,8 +30,9 @@ public:
     if (in_trial_)
       trial_.push_back (s);
   }
-  /** \brief Whether record() keeps anything (a retraction that is not logged may use threads). */
-  bool recording () const { return in_trial_ || stamp_ != 0; }
+  /** \brief record() for each of \a removed, from one of several threads that retract at once:
+    * a trial's removals are then kept in no particular order. */
+  void recordConcurrently (const std::vector<Simplex>& removed);
 
   /** \brief Starts a trial: removals are logged until commitTrial() keeps them or
     * rollbackTrial() puts them back. */
@@ -41,14 +43,16 @@ public:
       trial_.reserve (complex_.size (0) + complex_.size (1) + complex_.size (2) + complex_.size (3));
     in_trial_ = true;
   }
-  /** \brief The simplices removed since beginTrial(), in removal order. */
+  /** \brief The simplices removed since beginTrial(), in removal order within each run of the
+    * retraction on one thread. */
   const std::vector<Simplex>& trialRemovals () const { return trial_; }
   void commitTrial ()
   {
     trial_.clear ();
     in_trial_ = false;
   }
-  /** \brief Puts back into \a y, last first, everything removed since beginTrial(). */
+  /** \brief Puts back into \a y everything removed since beginTrial() (Subcomplex::putBack()
+    * gives the same Y in any order). */
   void rollbackTrial (Subcomplex& y);
 
   /** \brief From now on, every removed simplex remembers \a stamp (> 0). */
@@ -61,6 +65,7 @@ private:
   std::array<std::vector<std::uint32_t>, 4> stamps_;
   std::uint32_t stamp_ = 0;
   std::vector<Simplex> trial_;
+  std::mutex trial_mutex_;
   bool in_trial_ = false;
 };
 

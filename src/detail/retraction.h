@@ -30,9 +30,8 @@ public:
 
   /** \brief Collapses while a pair is free, looking at every pair of the flow (Del S to X);
     * returns the number of collapses.
-    * \param[in] order_seed 0 takes work in a fixed order, on all threads when the log is not
-    *            recording; any other value in a random order drawn from it (the result must not
-    *            depend on it: docs/design.md §5). */
+    * \param[in] order_seed 0 takes work on all threads; any other value on one, in a random
+    *            order drawn from it (the result must not depend on it: docs/design.md §5). */
   std::size_t retract (std::uint64_t order_seed = 0);
 
   /** \brief Deletes \a s (§8) if it is principal in Y, telling its facets; returns whether it was
@@ -40,7 +39,8 @@ public:
   bool deletePrincipal (Simplex s);
 
   /** \brief Collapses while a pair is free, looking only where deletions since the last call
-    * removed something. \a order_seed as for retract(). */
+    * removed something. \a order_seed as for retract(), except that with 0 a retraction goes
+    * on all threads only once it has made ALONE collapses on one: most are short. */
   std::size_t retractFreed (std::uint64_t order_seed = 0);
 
 private:
@@ -52,15 +52,33 @@ private:
     return classification_.of (v) == SimplexClass::equivocal && classification_.predecessor[v.dim][v.id].id != NO_SIMPLEX;
   }
   /** Removes every xi with v <= xi <= tau (v is tau's lowest successor), queueing on \a work
-    * the facets that stay. CONCURRENT as for remove(). */
+    * the facets that stay. CONCURRENT and \a removed as for remove(). */
   template <bool CONCURRENT>
-  void collapse (Simplex tau, std::vector<Simplex>& work);
-  /** retract() from a fixed order, on all threads, logging nothing. */
-  std::size_t retractInParallel ();
+  void collapse (Simplex tau, std::vector<Simplex>& work, std::vector<Simplex>* removed);
   /** Takes \a xi out of Y, tells its facets, and queues on \a work the facets that stay.
-    * CONCURRENT: other threads remove other simplices at the same time. */
+    * CONCURRENT: other threads remove other simplices at the same time, and \a xi goes on
+    * \a removed for the log instead of to it. */
   template <bool CONCURRENT>
-  void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below, std::vector<Simplex>& work);
+  void remove (Simplex xi, unsigned removed_mask, Simplex tau, unsigned kept_below, std::vector<Simplex>& work,
+               std::vector<Simplex>* removed);
+  /** Collapses from the pairs on \a work until none is left, alongside other threads, putting
+    * what it removes on \a removed (handed to the log in batches); after each collapse, \a share
+    * may hand part of \a work to the other threads. */
+  template <class Share>
+  std::size_t collapseConcurrently (std::vector<Simplex>& work, std::vector<Simplex>& removed, const Share& share);
+  /** Tells the log (if any) of \a removed, and empties it. */
+  void handToLog (std::vector<Simplex>& removed);
+  /** retract() from a fixed order, on all threads. */
+  std::size_t retractInParallel ();
+  /** retractFreed() on all threads. */
+  std::size_t retractFreedInParallel ();
+
+  /** Collapses a freed retraction makes on one thread before it goes on with all. */
+  static constexpr std::size_t ALONE = 4096;
+  /** The queued work a parallel retraction starts a thread with. */
+  static constexpr std::size_t SHARED_WORK = 512;
+  /** Removals a thread hands to the log at once. */
+  static constexpr std::size_t LOGGED_TOGETHER = 8192;
 
   Subcomplex& y_;
   const SimplicialComplex& complex_;

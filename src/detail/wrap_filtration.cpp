@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_filtration.h"
 
+#include "parallel_for_each.h"
 #include "removal_log.h"
 #include "retraction.h"
 #include "sink_deletion.h"
@@ -11,6 +12,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -125,40 +127,73 @@ orderSinks (const SimplicialComplex& complex, const Classification& classificati
             const std::vector<Point3>& positions, const std::vector<double>& weights, WrapFiltration& filtration,
             double larger_than, std::size_t at_least)
 {
-  std::vector<Simplex> all;
-  for (int k = 0; k <= complex.dimension (); ++k)
-    for (SimplexId s = 0; s < complex.size (k); ++s)
-      if (classification.classes[k][s] == SimplexClass::centered)
-        all.push_back ({k, s});
-  filtration.sink_count = all.size ();
-
-  // Every size bounded in interval arithmetic, on all threads.
-  std::vector<Interval> all_bounds (all.size ());
-  tbb::parallel_for (tbb::blocked_range<std::size_t> (0, all.size (), 4096), [&] (const tbb::blocked_range<std::size_t>& r) {
-    const CGAL::Protect_FPU_rounding<true> upward; // for all the interval arithmetic of the chunk
-    for (std::size_t i = r.begin (); i != r.end (); ++i)
-      all_bounds[i] = intervalSize (complex, all[i], positions, weights);
-  });
-  // The sinks that may belong to the prefix: an upper bound above larger_than, or one at least
-  // the at_least-th largest lower bound (the at_least largest sizes are all at least that).
-  double lowest_top = std::numeric_limits<double>::infinity ();
-  if (at_least > 0 && !all.empty ())
+  // One pass over the simplices on all threads bounds every sink's size in interval arithmetic
+  // and keeps those that may belong to the prefix: an upper bound above larger_than, or one at
+  // least the at_least-th largest lower bound (the at_least largest sizes are all at least that).
+  // Each thread keeps its own at_least largest lower bounds; the at_least-th of them is at most
+  // the overall one, so what it keeps is a superset, filtered at the end.
+  struct Found
   {
-    std::vector<double> lower (all.size ());
-    for (std::size_t i = 0; i < all.size (); ++i)
-      lower[i] = all_bounds[i].inf ();
-    const std::size_t nth = std::min (at_least, lower.size ()) - 1;
-    std::nth_element (lower.begin (), lower.begin () + nth, lower.end (), std::greater<> ());
-    lowest_top = lower[nth];
+    std::size_t sinks = 0;
+    std::vector<double> top; // a min-heap of the at_least largest lower bounds
+    std::vector<Simplex> kept;
+    std::vector<Interval> kept_bounds;
+  };
+  tbb::enumerable_thread_specific<Found> found;
+  for (int k = 0; k <= complex.dimension (); ++k)
+    tbb::parallel_for (tbb::blocked_range<SimplexId> (0, static_cast<SimplexId> (complex.size (k)), 4096),
+                       [&] (const tbb::blocked_range<SimplexId>& r) {
+                         const CGAL::Protect_FPU_rounding<true> upward; // for the chunk's interval arithmetic
+                         Found& f = found.local ();
+                         for (SimplexId s = r.begin (); s != r.end (); ++s)
+                         {
+                           if (classification.classes[k][s] != SimplexClass::centered)
+                             continue;
+                           ++f.sinks;
+                           const Interval b = intervalSize (complex, {k, s}, positions, weights);
+                           if (at_least > 0 && (f.top.size () < at_least || b.inf () > f.top.front ()))
+                           {
+                             if (f.top.size () == at_least)
+                             {
+                               std::pop_heap (f.top.begin (), f.top.end (), std::greater<> ());
+                               f.top.pop_back ();
+                             }
+                             f.top.push_back (b.inf ());
+                             std::push_heap (f.top.begin (), f.top.end (), std::greater<> ());
+                           }
+                           // With at_least 0 the heap stays empty and only larger_than decides.
+                           const bool may_be_in_top =
+                               at_least > 0 && (f.top.size () < at_least || b.sup () >= f.top.front ());
+                           if (b.sup () > larger_than || may_be_in_top)
+                           {
+                             f.kept.push_back ({k, s});
+                             f.kept_bounds.push_back (b);
+                           }
+                         }
+                       });
+  std::vector<double> top;
+  filtration.sink_count = 0;
+  for (const Found& f : found)
+  {
+    filtration.sink_count += f.sinks;
+    top.insert (top.end (), f.top.begin (), f.top.end ());
+  }
+  double lowest_top = std::numeric_limits<double>::infinity ();
+  if (at_least > 0 && !top.empty ())
+  {
+    const std::size_t nth = std::min (at_least, top.size ()) - 1;
+    std::nth_element (top.begin (), top.begin () + nth, top.end (), std::greater<> ());
+    lowest_top = top[nth];
   }
   std::vector<Simplex> sinks;
   std::vector<Interval> bounds;
-  for (std::size_t i = 0; i < all.size (); ++i)
-    if (all_bounds[i].sup () > larger_than || all_bounds[i].sup () >= lowest_top)
-    {
-      sinks.push_back (all[i]);
-      bounds.push_back (all_bounds[i]);
-    }
+  for (const Found& f : found)
+    for (std::size_t i = 0; i < f.kept.size (); ++i)
+      if (f.kept_bounds[i].sup () > larger_than || f.kept_bounds[i].sup () >= lowest_top)
+      {
+        sinks.push_back (f.kept[i]);
+        bounds.push_back (f.kept_bounds[i]);
+      }
 
   // Bounds that overlap others' leave the order to exact sizes, computed here on all threads.
   // Sorted by lower bound, a bound overlaps a later one iff it reaches the next one, and an
