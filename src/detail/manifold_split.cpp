@@ -102,11 +102,11 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
 }
 
 /** Glues the faces on the pinch edge (a, b) (a < b) pairwise, in the rotation order of the
-  * tetrahedra of Del S around it (docs/design.md §8). Where X has volume at the edge, each face is
-  * glued to the one across X: parts of X that touch along the edge come apart, and a sheet
-  * triangle folds back on itself. Where X is only sheets there, each face is glued to the one
-  * across the outside, so a sheet continues through the edge. \a choice > 0 picks the other of
-  * these two, then every other way to glue them without crossing. */
+  * tetrahedra of Del S around it (docs/design.md §8). First each face is glued to the one across
+  * the outside, as on the boundary of a thickened X: parts of X that touch along the edge stay
+  * joined there, and a sheet continues through the edge with one face per side. \a choice 1
+  * glues each face to the one across X instead (the parts come apart, a sheet folds back on
+  * itself), and higher choices every other way to glue them without crossing. */
 template <class Glue>
 void
 glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
@@ -166,20 +166,19 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
       if (!gap_in_x[i])
         around.push_back (faceOn (triangle[i], a, b));
     }
-  // Rotate so that the list starts with a face looking back: pairs (0,1), (2,3)... are then
-  // across the outside, pairs (1,2), ..., (2k-1,0) across X.
+  // Rotate so that the list starts with a face looking back: X (a tetrahedron, or a sheet
+  // triangle's zero thickness) lies ahead of it, so pairs (0,1), (2,3)... are across X, and
+  // pairs (1,2), ..., (2k-1,0) across the outside.
   if (!around.empty () && !traverses (faces[around[0]], b, a))
     std::rotate (around.begin (), around.begin () + 1, around.end ());
   const int k2 = static_cast<int> (around.size ());
   std::vector<std::pair<int, int>> across_outside, across_x;
   for (int i = 0; i < k2; i += 2)
   {
-    across_outside.emplace_back (i, i + 1);
-    across_x.emplace_back (i + 1, (i + 2) % k2);
+    across_x.emplace_back (i, i + 1);
+    across_outside.emplace_back (i + 1, (i + 2) % k2);
   }
-  const bool has_volume = std::any_of (gap_in_x.begin (), gap_in_x.end (), [] (std::uint8_t g) { return g != 0; });
-  std::vector<std::vector<std::pair<int, int>>> choices = {has_volume ? across_x : across_outside,
-                                                           has_volume ? across_outside : across_x};
+  std::vector<std::vector<std::pair<int, int>>> choices = {across_outside, across_x};
   if (choice >= 2)
   {
     std::vector<int> open (k2);
@@ -189,32 +188,6 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
   }
   for (const auto& [i, j] : choices[choice % choices.size ()])
     glue (around[i], around[j]);
-}
-
-/** The undirected edges (as keys) not in exactly two triangles traversed both ways. None: with
-  * every vertex's triangles one fan (by construction), a closed oriented 2-manifold. */
-std::vector<std::uint64_t>
-nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles)
-{
-  std::vector<std::uint64_t> directed, bad;
-  for (const auto& t : triangles)
-    for (int i = 0; i < 3; ++i)
-      directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
-  std::sort (directed.begin (), directed.end ());
-  for (std::size_t i = 0; i < directed.size (); ++i)
-  {
-    const std::uint64_t reverse = (directed[i] << 32) | (directed[i] >> 32);
-    if ((i + 1 < directed.size () && directed[i + 1] == directed[i]) ||
-        !std::binary_search (directed.begin (), directed.end (), reverse))
-      bad.push_back (std::min (directed[i], reverse));
-  }
-  return bad;
-}
-
-std::uint64_t
-edgeKey (std::uint32_t a, std::uint32_t b)
-{
-  return (std::uint64_t (std::min (a, b)) << 32) | std::max (a, b);
 }
 
 /** W's faces (a sheet triangle once per side) glued along every edge, then one vertex per fan.
@@ -344,15 +317,39 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
 
 } // namespace
 
+std::uint64_t
+edgeKey (std::uint32_t a, std::uint32_t b)
+{
+  return (std::uint64_t (std::min (a, b)) << 32) | std::max (a, b);
+}
+
+std::vector<std::uint64_t>
+nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  std::vector<std::uint64_t> directed, bad;
+  for (const auto& t : triangles)
+    for (int i = 0; i < 3; ++i)
+      directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
+  std::sort (directed.begin (), directed.end ());
+  for (std::size_t i = 0; i < directed.size (); ++i)
+  {
+    const std::uint64_t reverse = (directed[i] << 32) | (directed[i] >> 32);
+    if ((i + 1 < directed.size () && directed[i + 1] == directed[i]) ||
+        !std::binary_search (directed.begin (), directed.end (), reverse))
+      bad.push_back (std::min (directed[i], reverse));
+  }
+  return bad;
+}
+
 ManifoldSplit
 splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w)
 {
-  // Gluing across X pulls apart parts of X that touch along an edge; but where X, pulled apart,
-  // still meets itself around both ends of the edge (a tunnel sealed at just that edge), the two
-  // pulled-apart copies of the edge join the same two vertices. Around those ends the outside
-  // cannot also meet itself (on a small sphere around a vertex, X and the outside cannot both
-  // join up across the same point), so gluing that edge across the outside instead separates
-  // them. Flip the edges that need it until none does.
+  // Gluing across the outside keeps the parts of X that touch along an edge joined; but where the
+  // outside, pulled apart there, still meets itself around both ends of the edge (two pockets of
+  // the outside that touch only along it), the two pulled-apart copies of the edge join the same
+  // two vertices. Around those ends X cannot also meet itself (on a small sphere around a vertex,
+  // X and the outside cannot both join up across the same point), so gluing that edge across X
+  // instead separates them. Flip the edges that need it until none does.
   // Where several pinch edges meet at a vertex, their gluings interact, and an edge with more
   // than four faces has more ways to be glued: an edge still bad tries its next way. A few
   // rounds settle every input tried; the bound guards against cycling.

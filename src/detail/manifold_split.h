@@ -30,9 +30,20 @@ struct ManifoldSplit
   * faces the outside is a face; around an edge, the two faces that bound the same sector of the
   * outside (a run of tetrahedra not in X, found by walking around the edge in Del S) are glued;
   * then every vertex gets one copy per fan of faces glued around it. The faces are the boundary
-  * of a thickened X, hence a closed oriented 2-manifold.
+  * of a thickened X, hence a closed oriented 2-manifold; where two pockets of the outside touch
+  * only along an edge, which would join two copies of the edge to the same two vertices, the
+  * faces there are glued across X instead.
   * \throws std::logic_error if W is not closed (it always is: docs/design.md §5) */
 ManifoldSplit
 splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w);
+
+/** \brief An undirected edge as one key: the lower vertex id in the high half. */
+std::uint64_t
+edgeKey (std::uint32_t a, std::uint32_t b);
+
+/** \brief The undirected edges (as keys) of \a triangles not in exactly two of them traversed
+  * both ways. None: with every vertex's triangles one fan, a closed oriented 2-manifold. */
+std::vector<std::uint64_t>
+nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles);
 
 } // namespace pcl_wrap::detail

@@ -130,7 +130,9 @@ public:
     std::sort (touched.rbegin (), touched.rend ());
     touched.erase (std::unique (touched.begin (), touched.end ()), touched.end ());
     mend (touched, done);
-    done.pinched_vertices = static_cast<std::size_t> (std::count (unmended_.begin (), unmended_.end (), 1));
+    for (std::uint32_t v = 0; v < unmended_.size (); ++v)
+      if (unmended_[v])
+        done.pinched.push_back (v);
     return done;
   }
 

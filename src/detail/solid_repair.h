@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace pcl_wrap::detail
 {
@@ -16,7 +17,7 @@ namespace pcl_wrap::detail
 struct SolidRepair
 {
   std::size_t flipped = 0;          ///< tetrahedra moved to the other side
-  std::size_t pinched_vertices = 0; ///< vertices where the surface still touches itself
+  std::vector<std::uint32_t> pinched; ///< vertices where the surface still touches itself, ascending
 };
 
 /** \brief Moves tetrahedra across the surface of the solid in \a labels, weakest votes first,
@@ -29,7 +30,7 @@ struct SolidRepair
   *   touches the surface moved out (or in), which puts it on the surface.
   * - parts of the solid cut off from the rest are joined to it along X (see docs/surface.md).
   * Each tetrahedron changes side at most once, so the repair ends; a pinch it cannot mend is left
-  * to the pinch split (splitPinches()).
+  * to the pinch split (splitSolidPinches()).
   * \param[in] neighbours as for SolidLabelling */
 SolidRepair
 repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x,

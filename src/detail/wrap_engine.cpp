@@ -7,6 +7,7 @@
 #include "parallel_for_each.h"
 #include "retraction.h"
 #include "sink_deletion.h"
+#include "solid_pinch_split.h"
 #include "solid_repair.h"
 
 #include <algorithm>
@@ -197,12 +198,15 @@ WrapEngine::extractSurface ()
   const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (complex, neighbours_, *x_, labels);
   result_.statistics.tetrahedra_moved = repair.flipped;
   clock_.stageDone ("repair");
-  if (repair.pinched_vertices == 0)
-    w_ = extractSolidBoundary (complex, neighbours_, labels.inside);
-  else
+  w_ = extractSolidBoundary (complex, neighbours_, labels.inside);
+  if (!repair.pinched.empty ())
   {
-    pinched_solid_ = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
-    w_ = extractBoundary (complex, *pinched_solid_);
+    split_ = splitSolidPinches (complex, neighbours_, labels.inside, w_, repair.pinched);
+    if (!split_) // an edge needs more than the two simple pairings: the whole split tries the rest
+    {
+      pinched_solid_ = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
+      w_ = extractBoundary (complex, *pinched_solid_);
+    }
   }
   neighbours_ = {};
 }
@@ -213,13 +217,16 @@ WrapEngine::report ()
   const SimplicialComplex& complex = *complex_;
   WrapStatistics& stats = result_.statistics;
   if (pinched_solid_ || (parameters_.manifold && !cleanSurface ())) // a mended solid needs no split
+    split_ = splitPinches (complex, pinched_solid_ ? *pinched_solid_ : *x_, w_);
+  if (split_)
   {
-    ManifoldSplit split = splitPinches (complex, pinched_solid_ ? *pinched_solid_ : *x_, w_);
+    ManifoldSplit& split = *split_;
     w_.triangles = std::move (split.triangles);
     result_.copies = input_indices_.appendCopies (split.copy_of, points_.size ());
     stats.pinch_edges_split = split.pinch_edges;
     stats.pinch_vertices_split = split.pinch_vertices;
     stats.sheet_triangles_doubled = split.sheet_triangles;
+    split_.reset ();
   }
 #ifdef PCL_WRAP_CHECK_INVARIANTS
   checkSurface ();

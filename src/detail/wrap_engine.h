@@ -7,6 +7,7 @@
 #include "filled_in_parallel.h"
 #include "input_points.h"
 #include "input_indices.h"
+#include "manifold_split.h"
 #include "power_predicates.h"
 #include "regular_triangulation.h"
 #include "subcomplex.h"
@@ -107,7 +108,8 @@ private:
   std::unique_ptr<Subcomplex> x_;
   std::shared_ptr<const WrapFiltration> filtration_;
   Boundary w_;
-  std::unique_ptr<Subcomplex> pinched_solid_; // the repaired solid, when a pinch is left to split
+  std::unique_ptr<Subcomplex> pinched_solid_; // the repaired solid, when its pinches need the whole split
+  std::optional<ManifoldSplit> split_;        // W where it touched itself, split
 };
 
 } // namespace pcl_wrap::detail
