@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <sys/resource.h>
 
@@ -26,7 +27,7 @@ main (int argc, char** argv)
     std::cerr << "usage: bench_peers METHOD SHAPE|FILE [N] [SEED] [--mesh OUT.obj]\nmethods:";
     for (const auto& [name, peer] : pcl_wrap::bench::peers ())
       std::cerr << ' ' << name;
-    std::cerr << '\n';
+    std::cerr << " cgal_alpha_wrap:diag/D:alpha/R cgal_alpha_wrap:spacing*S:alpha/R\n";
     return 2;
   }
   const std::string method = argv[1];
@@ -42,8 +43,10 @@ main (int argc, char** argv)
   const std::size_t n = positional.size () > 1 ? std::stoul (positional[1]) : 0;
   const unsigned seed = positional.size () > 2 ? unsigned (std::stoul (positional[2])) : 1u;
   const auto& all = pcl_wrap::bench::peers ();
-  const auto peer = std::find_if (all.begin (), all.end (), [&] (const auto& p) { return p.first == method; });
-  if (peer == all.end ())
+  const auto named = std::find_if (all.begin (), all.end (), [&] (const auto& p) { return p.first == method; });
+  const std::optional<pcl_wrap::bench::Peer> peer =
+      named != all.end () ? std::optional (named->second) : pcl_wrap::bench::alphaWrapAt (method);
+  if (!peer)
   {
     std::cerr << "bench_peers: unknown method " << method << '\n';
     return 2;
@@ -58,7 +61,7 @@ main (int argc, char** argv)
   }
 
   const auto start = std::chrono::steady_clock::now ();
-  const pcl_wrap::bench::PeerOutput out = peer->second (points);
+  const pcl_wrap::bench::PeerOutput out = (*peer) (points);
   const double seconds = std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   rusage usage{};
   ::getrusage (RUSAGE_SELF, &usage);
@@ -66,6 +69,11 @@ main (int argc, char** argv)
   if (!mesh_path.empty ())
   {
     std::ofstream obj (mesh_path);
+    if (!obj)
+    {
+      std::cerr << "bench_peers: cannot write " << mesh_path << '\n';
+      return 1;
+    }
     obj.precision (17);
     for (const auto& v : out.vertices)
       obj << "v " << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';

@@ -66,7 +66,7 @@ def available_memory():
 
 def run_method(method, source, n, work, timeout, quality=True):
     """One method on one dataset: its JSON line plus quality (unless told not to), or an error."""
-    mesh = os.path.join(work, method + ".obj")
+    mesh = os.path.join(work, "".join(c if c.isalnum() or c == "_" else "-" for c in method) + ".obj")
     points_xyz = os.path.join(work, "points.xyz")
     if method in PY_METHODS:
         cmd = ["/usr/bin/python3", os.path.join(HERE, "open3d_peer.py"), method, points_xyz, "--mesh", mesh]
@@ -155,6 +155,17 @@ def run_all(args):
                 best[method]["runs"] = turns
                 rows.append(best[method])
                 print(json.dumps(best[method]), flush=True)
+    return rows
+
+
+def saved_or_measured(saved, report_only, measure):
+    """The rows kept in the JSON file saved when report_only, else measure()'s, kept there."""
+    if report_only:
+        with open(saved) as f:
+            return json.load(f)
+    rows = measure()
+    with open(saved, "w") as f:
+        json.dump(rows, f, indent=1)
     return rows
 
 
@@ -370,11 +381,17 @@ def main():
             json.dump({"machine": machine, "warm_memory": args.warm_memory, "rows": rows}, f, indent=1)
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args, machine)
-    surface = os.path.join(HERE, "surface_quality.md")  # bench/surface_quality.sh's table, with its reading
-    if os.path.exists(surface):
-        at = lines.index("## Against the floor")
-        lines[at:at] = open(surface).read().rstrip().split("\n") + [""]
+    # Sections other scripts write: bench/surface_quality.sh's table with its reading, bench/race.py's
+    # time against quality, bench/scaling.py's time and memory per point.
+    for section in ("surface_quality.md", "race.md"):
+        path = os.path.join(HERE, section)
+        if os.path.exists(path):
+            at = lines.index("## Against the floor")
+            lines[at:at] = open(path).read().rstrip().split("\n") + [""]
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
+    scaling = os.path.join(HERE, "scaling.md")
+    if os.path.exists(scaling):
+        lines += [""] + open(scaling).read().rstrip().split("\n")
     profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
     if os.path.exists(profile):
         lines += ["", open(profile).read().rstrip()]

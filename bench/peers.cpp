@@ -129,12 +129,8 @@ advancingFront (const std::vector<Point3>& points)
 }
 
 PeerOutput
-alphaWrap (const std::vector<Point3>& points)
+alphaWrapWith (const std::vector<Point3>& points, double alpha, double offset, const std::string& note)
 {
-  // The values of CGAL's own example: alpha = diagonal / 20, offset = diagonal / 600; and a
-  // finer alpha = 10 x the spacing, closer to the points' detail, whichever is smaller.
-  const double diag = boundingBoxDiagonal (points);
-  const double alpha = std::min (diag / 20.0, 10.0 * medianSpacing (points)), offset = diag / 600.0;
   const auto p = cgalPoints (points);
   CGAL::Surface_mesh<K::Point_3> mesh;
   CGAL::alpha_wrap_3 (p, alpha, offset, mesh);
@@ -155,8 +151,17 @@ alphaWrap (const std::vector<Point3>& points)
         t[i++] = index[v];
     out.triangles.push_back (t);
   }
-  out.note = "alpha " + std::to_string (alpha) + ", offset " + std::to_string (offset);
+  out.note = note + "alpha " + std::to_string (alpha) + ", offset " + std::to_string (offset);
   return out;
+}
+
+PeerOutput
+alphaWrap (const std::vector<Point3>& points)
+{
+  // The values of CGAL's own example: alpha = diagonal / 20, offset = diagonal / 600; and a
+  // finer alpha = 10 x the spacing, closer to the points' detail, whichever is smaller.
+  const double diag = boundingBoxDiagonal (points);
+  return alphaWrapWith (points, std::min (diag / 20.0, 10.0 * medianSpacing (points)), diag / 600.0, "");
 }
 
 PeerOutput
@@ -282,6 +287,29 @@ peers ()
       {"cgal_alpha_wrap", alphaWrap},          {"cgal_alpha_shape", alphaShape},
       {"pcl_concave_hull", concaveHull},       {"pcl_greedy_projection", greedyProjection}};
   return all;
+}
+
+std::optional<Peer>
+alphaWrapAt (const std::string& method)
+{
+  // cgal_alpha_wrap:diag/D:alpha/R or cgal_alpha_wrap:spacing*S:alpha/R
+  const std::string prefix = "cgal_alpha_wrap:";
+  if (method.compare (0, prefix.size (), prefix) != 0)
+    return std::nullopt;
+  const std::size_t colon = method.find (":alpha/", prefix.size ());
+  if (colon == std::string::npos)
+    return std::nullopt;
+  const std::string alpha = method.substr (prefix.size (), colon - prefix.size ());
+  const double offset_ratio = std::stod (method.substr (colon + 7));
+  const bool by_diagonal = alpha.compare (0, 5, "diag/") == 0;
+  if (!by_diagonal && alpha.compare (0, 8, "spacing*") != 0)
+    return std::nullopt;
+  const double factor = std::stod (alpha.substr (by_diagonal ? 5 : 8));
+  return Peer ([=] (const std::vector<Point3>& points) {
+    // The scale comes from the points, inside the timing, as a user would compute it.
+    const double a = by_diagonal ? boundingBoxDiagonal (points) / factor : factor * medianSpacing (points);
+    return alphaWrapWith (points, a, a / offset_ratio, alpha + ": ");
+  });
 }
 
 double

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +34,13 @@ using Peer = std::function<PeerOutput (const std::vector<Point3>&)>;
   * cgal_alpha_wrap, cgal_alpha_shape, pcl_concave_hull, pcl_greedy_projection. */
 const std::vector<std::pair<std::string, Peer>>&
 peers ();
+
+/** \brief CGAL's Alpha_wrap_3 at the alpha and offset a method name gives:
+  * cgal_alpha_wrap:diag/D:alpha/R (alpha = bounding box diagonal / D) or
+  * cgal_alpha_wrap:spacing*S:alpha/R (alpha = S x the median spacing), offset = alpha / R;
+  * nothing for any other name. */
+std::optional<Peer>
+alphaWrapAt (const std::string& method);
 
 /** The median distance from a point to its nearest neighbour, through PCL's k-d tree as a user
   * of these methods would compute it: the scale the peers' parameters are set from, inside
