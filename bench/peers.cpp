@@ -83,6 +83,8 @@ wrapWith (const std::vector<Point3>& points, WrapParameters parameters, const st
   const WrapResult r = computeWrap (points, parameters);
   PeerOutput out;
   out.vertices = points;
+  for (const PointIndex i : r.copies) // vertices split where the surface touches itself
+    out.vertices.push_back (points[i]);
   out.triangles = r.surface.triangles;
   out.note = note;
   for (const auto& t : r.statistics.timings)

@@ -82,6 +82,8 @@ statistics (const WrapStatistics& s)
   d["pinch_vertices_split"] = s.pinch_vertices_split;
   d["sheet_triangles_doubled"] = s.sheet_triangles_doubled;
   d["tetrahedra_moved"] = s.tetrahedra_moved;
+  d["single_layer"] = s.single_layer;
+  d["bridge_triangles"] = s.bridge_triangles;
   d["w_triangles"] = s.w_triangles;
   d["w_dangling_edges"] = s.w_dangling_edges;
   d["w_isolated_vertices"] = s.w_isolated_vertices;

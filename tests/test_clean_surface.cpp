@@ -98,6 +98,35 @@ TEST (CleanSurface, OneSidedCapGivesOneClosedSurfaceThroughItsPoints)
     if (p[2] > 0)
       cap.push_back (p);
   expectCleanSurface (cap, 1, 0);
+  EXPECT_FALSE (computeWrap (cap).statistics.single_layer) << "a dome closed by its flat hull has volume";
+}
+
+TEST (CleanSurface, TerrainGivesATwoSidedShellThroughItsPoints)
+{
+  // Where the terrain lies on its convex hull, nothing is behind it: the solid closed by the hull
+  // would have no thickness there. The output is X's layer once per side instead.
+  const std::vector<Point3> terrain = terrainSample (5000, 1);
+  const WrapResult r = computeWrap (terrain);
+  EXPECT_TRUE (r.statistics.single_layer);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_EQ (2 * long (s.components), s.euler) << "every piece a sphere: a doubled disk";
+  std::set<PointIndex> on;
+  for (const auto& t : r.surface.triangles)
+    for (PointIndex v : t)
+      on.insert (v < terrain.size () ? v : r.copies[v - terrain.size ()]);
+  EXPECT_GE (on.size () * 100, terrain.size () * 99) << on.size () << " of " << terrain.size () << " points on it";
+  // Every triangle is a face of Wrap's X or one of the few that tie its pieces together.
+  EXPECT_LE (r.statistics.bridge_triangles, terrain.size () / 100);
+
+  // Pieces of X that meet at a vertex are tied together: fewer pieces than X's split alone.
+  WrapParameters raw;
+  raw.output = Output::raw;
+  raw.manifold = true;
+  const SurfaceReport split = describeSurface (trianglesOf (computeWrap (terrain, raw)));
+  EXPECT_LT (s.components, split.components);
+  EXPECT_LT (s.components * 100, terrain.size ()) << "no more than a few pieces at the rim";
 }
 
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)

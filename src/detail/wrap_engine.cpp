@@ -8,6 +8,7 @@
 #include "retraction.h"
 #include "sink_deletion.h"
 #include "solid_pinch_split.h"
+#include "single_layer.h"
 #include "solid_repair.h"
 
 #include <algorithm>
@@ -195,6 +196,7 @@ WrapEngine::extractSurface ()
   SolidLabels labels = labelling_->labels (*x_);
   labelling_.reset ();
   clock_.stageDone ("labelling");
+  const bool single_layer = !labels.hull && isSingleLayer (complex, *x_, labels.inside);
   const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (complex, neighbours_, *x_, labels);
   result_.statistics.tetrahedra_moved = repair.flipped;
   clock_.stageDone ("repair");
@@ -206,6 +208,20 @@ WrapEngine::extractSurface ()
     {
       pinched_solid_ = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
       w_ = extractBoundary (complex, *pinched_solid_);
+    }
+  }
+  if (single_layer && verticesOn (w_.triangles) < complex.numVertices ())
+  {
+    // The labelled solid is not Wrap's and leaves points off its surface: the points are one
+    // layer, and X is that layer.
+    TwoSidedShell shell = twoSidedShell (complex, neighbours_, *x_);
+    if (verticesOn (shell.w.triangles) > verticesOn (w_.triangles))
+    {
+      w_ = std::move (shell.w);
+      split_ = std::move (shell.split);
+      pinched_solid_.reset ();
+      result_.statistics.single_layer = true;
+      result_.statistics.bridge_triangles = shell.bridges;
     }
   }
   neighbours_ = {};

@@ -56,6 +56,22 @@ torusSample (std::size_t n, unsigned seed, double major = 1.0, double minor = 0.
   return p;
 }
 
+/** A height field seen from above, z = 0.2 sin 3x cos 2y over [-1, 1]^2: a single layer, with no
+  * inside behind it, that lies on its own convex hull where it bends upward. */
+inline std::vector<Point3>
+terrainSample (std::size_t n, unsigned seed)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+  {
+    const double x = u (random), y = u (random);
+    q = {x, y, 0.2 * std::sin (3 * x) * std::cos (2 * y)};
+  }
+  return p;
+}
+
 /** A surface of genus 2: two tori (radii 1 and 0.4, around z-axes through (-1.1, 0, 0) and
   * (1.1, 0, 0)) fused where they overlap, each torus's points inside the other's solid dropped.
   * The two tunnels' axes are x = -1.1 and x = 1.1. */
