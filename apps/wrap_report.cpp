@@ -207,7 +207,7 @@ printSummary (std::ostream& out, const WrapStatistics& s)
     out << "; split " << s.pinch_edges_split << " pinch edges, " << s.pinch_vertices_split << " pinch vertices, "
         << s.sheet_triangles_doubled << " sheet triangles doubled";
   if (s.single_layer)
-    out << "; the points are a single layer: a two-sided shell, " << s.bridge_triangles << " triangles tie its pieces";
+    out << "; the points are a single layer: a two-sided shell, " << s.bridge_triangles << " simplices tie its pieces";
   out << "\n"
       << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
   for (std::size_t i = 0; i < s.timings.size (); ++i)

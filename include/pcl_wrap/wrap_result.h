@@ -137,8 +137,8 @@ struct WrapStatistics
   /** \brief The clean surface: the points are a single layer (a terrain, a scan seen from one
     * side), so the surface is X's boundary as a closed two-sided shell, the points copied per side. */
   bool single_layer = false;
-  /** \brief With single_layer: Delaunay triangles added to tie pieces of the shell that met only
-    * at a vertex to the rest. */
+  /** \brief With single_layer: Delaunay triangles and tetrahedra added to tie pieces of the shell
+    * that the split separated at a vertex to the rest. */
   std::size_t bridge_triangles = 0;
 
   std::size_t w_triangles = 0;

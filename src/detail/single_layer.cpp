@@ -8,6 +8,7 @@
 #include <array>
 #include <iterator>
 #include <numeric>
+#include <tuple>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -25,93 +26,222 @@ findRoot (std::vector<std::uint32_t>& parent, std::uint32_t a)
   return a;
 }
 
-/** The Delaunay triangles around one vertex u, as the edges of its link: (a, b, triangle id) for
-  * each triangle (u, a, b), sorted. */
-std::vector<std::array<std::uint32_t, 3>>
-linkOf (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, std::uint32_t u,
+/** The squared length of the longest edge of \a s. */
+double
+longestEdge (const SimplicialComplex& complex, const std::vector<Point3>& positions, Simplex s)
+{
+  double longest = 0.0;
+  const std::uint32_t* v = complex.vertices (s.dim, s.id);
+  for (int i = 0; i <= s.dim; ++i)
+    for (int j = 0; j < i; ++j)
+    {
+      const Point3 &p = positions[v[i]], &q = positions[v[j]];
+      longest = std::max (longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    }
+  return longest;
+}
+
+/** The Delaunay tetrahedra around vertex u (its star), from one of them. */
+std::vector<std::uint32_t>
+starOf (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, std::uint32_t u,
         std::uint32_t first_tetrahedron)
 {
   std::vector<std::uint32_t> star{first_tetrahedron};
-  std::vector<std::array<std::uint32_t, 3>> link;
   for (std::size_t k = 0; k < star.size (); ++k)
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t t = star[k], next = neighbours[4 * std::size_t (t) + i];
+      if (complex.vertex (3, t, i) != u && next != NO_NEIGHBOUR && std::find (star.begin (), star.end (), next) == star.end ())
+        star.push_back (next); // across a facet that holds u
+    }
+  return star;
+}
+
+/** An edge (x, y) of a link, and the simplex that gives it. */
+struct LinkEdge
+{
+  std::uint32_t x, y;
+  Simplex simplex;
+  double size; ///< the simplex's longest edge, squared
+  bool operator== (const LinkEdge& o) const { return x == o.x && y == o.y && simplex == o.simplex; }
+};
+
+/** The link of u: an edge (a, b) for each triangle (u, a, b) of its star. With \a w, the link of
+  * the edge (u, w) instead: an edge (a, b) for each tetrahedron (u, w, a, b). */
+std::vector<LinkEdge>
+linkOf (const SimplicialComplex& complex, const std::vector<Point3>& positions, const std::vector<std::uint32_t>& star,
+        std::uint32_t u, std::uint32_t w = NONE)
+{
+  std::vector<LinkEdge> link;
+  for (std::uint32_t t : star)
   {
-    const std::uint32_t t = star[k];
     const std::uint32_t* v = complex.vertices (3, t);
     for (int i = 0; i < 4; ++i)
     {
-      if (v[i] == u)
+      if (v[i] == u || (w != NONE && v[i] != w))
         continue;
-      // The facet opposite v[i] holds u: a link edge, and the way to the next tetrahedron of the star.
       std::array<std::uint32_t, 2> ab{};
       int m = 0;
       for (int j = 0; j < 4; ++j)
         if (j != i && v[j] != u)
           ab[m++] = v[j];
-      link.push_back ({std::min (ab[0], ab[1]), std::max (ab[0], ab[1]), complex.facet (3, t, i).id});
-      const std::uint32_t next = neighbours[4 * std::size_t (t) + i];
-      if (next != NO_NEIGHBOUR && std::find (star.begin (), star.end (), next) == star.end ())
-        star.push_back (next);
+      const Simplex simplex = w == NONE ? complex.facet (3, t, i) : Simplex{3, t};
+      link.push_back ({std::min (ab[0], ab[1]), std::max (ab[0], ab[1]), simplex, longestEdge (complex, positions, simplex)});
     }
   }
-  std::sort (link.begin (), link.end ());
+  std::sort (link.begin (), link.end (), [] (const LinkEdge& e, const LinkEdge& f) {
+    return std::tie (e.x, e.y, e.simplex.id) < std::tie (f.x, f.y, f.simplex.id);
+  });
   link.erase (std::unique (link.begin (), link.end ()), link.end ());
   return link;
 }
 
-/** The triangles of the fewest link edges of u from a vertex of \a from to one of \a to (both
-  * sorted), by breadth-first search in the order of vertex ids; empty if none. */
-std::vector<SimplexId>
-linkPath (const std::vector<std::array<std::uint32_t, 3>>& link, const std::vector<std::uint32_t>& from,
-          const std::vector<std::uint32_t>& to)
+/** A path of link edges from a vertex of \a from to one of \a to (both sorted) whose largest
+  * simplex is as small as can be; with that, the fewest edges, found breadth-first in the order of
+  * vertex ids. Empty if there is none. */
+std::vector<Simplex>
+linkPath (const std::vector<LinkEdge>& link, const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to)
 {
   std::vector<std::uint32_t> nodes;
   for (const auto& e : link)
-    nodes.insert (nodes.end (), {e[0], e[1]});
+    nodes.insert (nodes.end (), {e.x, e.y});
   std::sort (nodes.begin (), nodes.end ());
   nodes.erase (std::unique (nodes.begin (), nodes.end ()), nodes.end ());
   const auto index = [&] (std::uint32_t a) {
     return static_cast<std::uint32_t> (std::lower_bound (nodes.begin (), nodes.end (), a) - nodes.begin ());
   };
-  std::vector<std::vector<std::pair<std::uint32_t, SimplexId>>> next (nodes.size ());
-  for (const auto& e : link)
+  const auto in = [] (const std::vector<std::uint32_t>& set, std::uint32_t a) {
+    return std::binary_search (set.begin (), set.end (), a);
+  };
+  // The bottleneck: add the link's edges smallest first until a part holds both ends.
+  std::vector<std::uint32_t> part (nodes.size ());
+  std::iota (part.begin (), part.end (), 0u);
+  std::vector<std::uint8_t> ends (nodes.size (), 0); // per part: 1 holds a start, 2 a goal
+  for (std::uint32_t a = 0; a < nodes.size (); ++a)
+    ends[a] = (in (from, nodes[a]) ? 1 : 0) | (in (to, nodes[a]) ? 2 : 0);
+  std::vector<std::size_t> order (link.size ());
+  std::iota (order.begin (), order.end (), std::size_t (0));
+  std::stable_sort (order.begin (), order.end (), [&] (std::size_t i, std::size_t j) { return link[i].size < link[j].size; });
+  double bottleneck = -1.0;
+  for (std::size_t i : order)
   {
-    next[index (e[0])].emplace_back (index (e[1]), e[2]);
-    next[index (e[1])].emplace_back (index (e[0]), e[2]);
-  }
-  std::vector<std::uint32_t> came_from (nodes.size (), NONE), queue;
-  std::vector<SimplexId> via (nodes.size (), NO_SIMPLEX);
-  for (std::uint32_t a : from)
-    if (std::binary_search (nodes.begin (), nodes.end (), a))
+    const std::uint32_t a = findRoot (part, index (link[i].x)), b = findRoot (part, index (link[i].y));
+    part[b] = a;
+    ends[a] |= ends[b];
+    if (ends[a] == 3)
     {
-      came_from[index (a)] = index (a);
-      queue.push_back (index (a));
+      bottleneck = link[i].size;
+      break;
+    }
+  }
+  if (bottleneck < 0.0)
+    return {};
+  std::vector<std::vector<std::pair<std::uint32_t, Simplex>>> next (nodes.size ());
+  for (const auto& e : link)
+    if (e.size <= bottleneck)
+    {
+      next[index (e.x)].emplace_back (index (e.y), e.simplex);
+      next[index (e.y)].emplace_back (index (e.x), e.simplex);
+    }
+  std::vector<std::uint32_t> came_from (nodes.size (), NONE), queue;
+  std::vector<Simplex> via (nodes.size ());
+  for (std::uint32_t a = 0; a < nodes.size (); ++a)
+    if (in (from, nodes[a]))
+    {
+      came_from[a] = a;
+      queue.push_back (a);
     }
   for (std::size_t k = 0; k < queue.size (); ++k)
   {
     const std::uint32_t a = queue[k];
-    if (std::binary_search (to.begin (), to.end (), nodes[a]))
+    if (in (to, nodes[a]))
     {
-      std::vector<SimplexId> path;
+      std::vector<Simplex> path;
       for (std::uint32_t b = a; came_from[b] != b; b = came_from[b])
         path.push_back (via[b]);
       return path;
     }
-    for (const auto& [b, triangle] : next[a])
+    for (const auto& [b, simplex] : next[a])
       if (came_from[b] == NONE)
       {
         came_from[b] = a;
-        via[b] = triangle;
+        via[b] = simplex;
         queue.push_back (b);
       }
   }
   return {};
 }
 
-/** The pieces of \a split (connected through edges) that meet another piece only at a vertex,
-  * and the Delaunay triangles that tie them together: one path per pair of pieces to join, found
-  * at their lowest shared vertex. */
-std::vector<SimplexId>
-bridges (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
+/** Does a bridge \a path meet the shell along an edge other than those of the triangles it
+  * joins (\a mine, \a theirs: (u, piece, x, y) for the triangles (u, x, y))? It would close a loop
+  * through the shell there: a handle. */
+bool
+meetsElsewhere (const SimplicialComplex& complex, const std::vector<Simplex>& path,
+                const std::vector<std::uint8_t>& edge_in_k, const std::vector<std::array<std::uint32_t, 4>>& mine,
+                const std::vector<std::array<std::uint32_t, 4>>& theirs)
+{
+  const auto joined = [&] (std::uint32_t x, std::uint32_t y) {
+    for (const auto* triangles : {&mine, &theirs})
+      for (const auto& t : *triangles)
+      {
+        const auto has = [&] (std::uint32_t v) { return v == t[0] || v == t[2] || v == t[3]; };
+        if (has (x) && has (y))
+          return true;
+      }
+    return false;
+  };
+  for (const Simplex g : path)
+    for (int i = 0; i <= g.dim; ++i)
+      for (int j = 0; j < i; ++j)
+      {
+        const Simplex e = complex.face (g.dim, g.id, (1u << i) | (1u << j));
+        if (edge_in_k[e.id] && !joined (complex.vertex (1, e.id, 0), complex.vertex (1, e.id, 1)))
+          return true;
+      }
+  return false;
+}
+
+/** The pieces of a closed surface and its Euler characteristic. */
+struct Topology
+{
+  std::size_t pieces = 0;
+  long euler = 0;
+  long genus () const { return (2 * long (pieces) - euler) / 2; }
+};
+
+Topology
+topologyOf (const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  std::vector<std::uint32_t> vertices;
+  for (const auto& t : triangles)
+    vertices.insert (vertices.end (), t.begin (), t.end ());
+  std::sort (vertices.begin (), vertices.end ());
+  vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
+  const auto index = [&] (std::uint32_t v) {
+    return static_cast<std::uint32_t> (std::lower_bound (vertices.begin (), vertices.end (), v) - vertices.begin ());
+  };
+  std::vector<std::uint32_t> piece (vertices.size ());
+  std::iota (piece.begin (), piece.end (), 0u);
+  for (const auto& t : triangles)
+  {
+    piece[findRoot (piece, index (t[1]))] = findRoot (piece, index (t[0]));
+    piece[findRoot (piece, index (t[2]))] = findRoot (piece, index (t[0]));
+  }
+  Topology out;
+  for (std::uint32_t v = 0; v < piece.size (); ++v)
+    out.pieces += piece[v] == v;
+  // Closed: every edge in two triangles, E = 3F / 2.
+  out.euler = long (vertices.size ()) - long (3 * triangles.size () / 2) + long (triangles.size ());
+  return out;
+}
+
+/** The simplices that tie together the pieces of \a split (connected through edges) that share
+  * a vertex: for each pair of pieces to join, at their lowest shared vertex u, the tetrahedra
+  * around an edge they share or the triangles around u from one to the other, unless that would
+  * make a handle (meetsElsewhere). \a edge_in_k: per edge, in the complex split. */
+std::vector<Simplex>
+bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
+         const FilledInParallel<std::uint32_t>& neighbours, const std::vector<std::uint8_t>& edge_in_k,
          const ManifoldSplit& split, std::vector<std::uint32_t>& tet_of_vertex)
 {
   const std::uint32_t nv = complex.numVertices ();
@@ -154,19 +284,32 @@ bridges (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>
   if (pairs.empty ())
     return {};
 
-  // Per piece and shared vertex, the original vertices next to it: where a path may start or end.
-  std::vector<std::array<std::uint32_t, 3>> sides; // (vertex, piece, neighbour)
+  // Per shared vertex u and piece, the piece's triangles (u, x, y) at u, as (u, piece, x, y).
+  std::vector<std::array<std::uint32_t, 4>> sides;
   for (const auto& t : split.triangles)
     for (int i = 0; i < 3; ++i)
       if (at_bridge[base (t[i])])
-        for (int j = 1; j < 3; ++j)
-          sides.push_back ({base (t[i]), findRoot (piece, t[i]), base (t[(i + j) % 3])});
+      {
+        const std::uint32_t x = base (t[(i + 1) % 3]), y = base (t[(i + 2) % 3]);
+        sides.push_back ({base (t[i]), findRoot (piece, t[i]), std::min (x, y), std::max (x, y)});
+      }
   std::sort (sides.begin (), sides.end ());
-  const auto neighboursIn = [&] (std::uint32_t u, std::uint32_t p) {
+  const auto trianglesAt = [&] (std::uint32_t u, std::uint32_t p) {
+    const auto first = std::lower_bound (sides.begin (), sides.end (), std::array<std::uint32_t, 4>{u, p, 0, 0});
+    auto last = first;
+    while (last != sides.end () && (*last)[0] == u && (*last)[1] == p)
+      ++last;
+    return std::vector<std::array<std::uint32_t, 4>> (first, last);
+  };
+  // The third vertices of the triangles (u, a, c) of a piece, sorted; with a = NONE, all their vertices.
+  const auto around = [] (const std::vector<std::array<std::uint32_t, 4>>& triangles, std::uint32_t a) {
     std::vector<std::uint32_t> out;
-    auto at = std::lower_bound (sides.begin (), sides.end (), std::array<std::uint32_t, 3>{u, p, 0});
-    for (; at != sides.end () && (*at)[0] == u && (*at)[1] == p; ++at)
-      out.push_back ((*at)[2]);
+    for (const auto& t : triangles)
+      if (a == NONE)
+        out.insert (out.end (), {t[2], t[3]});
+      else if (t[2] == a || t[3] == a)
+        out.push_back (t[2] == a ? t[3] : t[2]);
+    std::sort (out.begin (), out.end ());
     out.erase (std::unique (out.begin (), out.end ()), out.end ());
     return out;
   };
@@ -178,17 +321,25 @@ bridges (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>
       for (int i = 0; i < 4; ++i)
         tet_of_vertex[complex.vertex (3, t, i)] = t;
   }
-  std::vector<SimplexId> added;
+  std::vector<Simplex> added;
   for (const auto& [u, p, q] : pairs)
   {
     if (tet_of_vertex[u] == NONE)
       continue;
-    // Pieces that share an edge at u as well were split there: a path must leave that edge.
-    const std::vector<std::uint32_t> from = neighboursIn (u, p), to_any = neighboursIn (u, q);
-    std::vector<std::uint32_t> to;
-    std::set_difference (to_any.begin (), to_any.end (), from.begin (), from.end (), std::back_inserter (to));
-    const auto path = linkPath (linkOf (complex, neighbours, u, tet_of_vertex[u]), from, to);
-    added.insert (added.end (), path.begin (), path.end ());
+    const auto mine = trianglesAt (u, p), theirs = trianglesAt (u, q);
+    const std::vector<std::uint32_t> from = around (mine, NONE), to = around (theirs, NONE);
+    std::vector<std::uint32_t> shared;
+    std::set_intersection (from.begin (), from.end (), to.begin (), to.end (), std::back_inserter (shared));
+    const std::vector<std::uint32_t> star = starOf (complex, neighbours, u, tet_of_vertex[u]);
+    // Pieces that share an edge (u, a) were split apart there: as one sheet, both its sides would
+    // close up at u and a. The tetrahedra around the edge from one piece's triangle to the
+    // other's make them one solid wedge there; pieces that share only u get a fan of triangles.
+    const std::vector<Simplex> path = shared.empty ()
+                                          ? linkPath (linkOf (complex, positions, star, u), from, to)
+                                          : linkPath (linkOf (complex, positions, star, u, shared.front ()),
+                                                      around (mine, shared.front ()), around (theirs, shared.front ()));
+    if (!meetsElsewhere (complex, path, edge_in_k, mine, theirs))
+      added.insert (added.end (), path.begin (), path.end ());
   }
   return added;
 }
@@ -220,7 +371,8 @@ verticesOn (const std::vector<std::array<std::uint32_t, 3>>& triangles)
 }
 
 TwoSidedShell
-twoSidedShell (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x)
+twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& positions,
+               const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x)
 {
   std::array<std::vector<std::uint8_t>, 4> members;
   for (int k = 0; k <= 3; ++k)
@@ -229,27 +381,42 @@ twoSidedShell (const SimplicialComplex& complex, const FilledInParallel<std::uin
     for (SimplexId s = 0; s < members[k].size (); ++s)
       members[k][s] = x.contains ({k, s});
   }
-  TwoSidedShell shell;
+  const auto shellOf = [&] (const std::array<std::vector<std::uint8_t>, 4>& m) {
+    const Subcomplex k (complex, m);
+    TwoSidedShell out;
+    out.w = extractBoundary (complex, k);
+    out.split = splitPinches (complex, k, out.w);
+    return out;
+  };
+  TwoSidedShell shell = shellOf (members);
+  Topology now = topologyOf (shell.split.triangles);
   std::vector<std::uint32_t> tet_of_vertex;
-  while (true)
+  while (now.pieces > 1)
   {
-    const Subcomplex k (complex, members);
-    shell.w = extractBoundary (complex, k);
-    shell.split = splitPinches (complex, k, shell.w);
-    std::vector<SimplexId> added = bridges (complex, neighbours, shell.split, tet_of_vertex);
-    // Each round joins pieces or adds nothing new; a round that adds nothing ends it.
-    added.erase (std::remove_if (added.begin (), added.end (), [&] (SimplexId f) { return members[2][f] != 0; }),
+    std::vector<Simplex> added = bridges (complex, positions, neighbours, members[1], shell.split, tet_of_vertex);
+    added.erase (std::remove_if (added.begin (), added.end (), [&] (Simplex s) { return members[s.dim][s.id] != 0; }),
                  added.end ());
     if (added.empty ())
-      return shell;
-    for (SimplexId f : added)
-      for (unsigned mask = 1; mask < 8; ++mask)
+      break;
+    std::array<std::vector<std::uint8_t>, 4> more = members;
+    for (const Simplex s : added)
+      for (unsigned mask = 1; mask < (1u << (s.dim + 1)); ++mask)
       {
-        const Simplex g = complex.face (2, f, mask);
-        members[g.dim][g.id] = 1;
+        const Simplex g = complex.face (s.dim, s.id, mask);
+        more[g.dim][g.id] = 1;
       }
-    shell.bridges += added.size ();
+    TwoSidedShell tied = shellOf (more);
+    const Topology then = topologyOf (tied.split.triangles);
+    // A round is kept when it leaves fewer pieces and no new handle; each kept round adds
+    // simplices, so the rounds end.
+    if (then.pieces >= now.pieces || then.genus () > now.genus ())
+      break;
+    tied.bridges = shell.bridges + added.size ();
+    members = std::move (more);
+    shell = std::move (tied);
+    now = then;
   }
+  return shell;
 }
 
 } // namespace pcl_wrap::detail

@@ -8,6 +8,8 @@
 #include "simplicial_complex.h"
 #include "subcomplex.h"
 
+#include <pcl_wrap/compute_wrap.h>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,18 +35,21 @@ struct TwoSidedShell
 {
   Boundary w;           ///< the boundary of X and the bridges
   ManifoldSplit split;  ///< w split where it touches itself, sheets once per side
-  std::size_t bridges = 0; ///< Delaunay triangles added to tie pieces to the rest
+  std::size_t bridges = 0; ///< Delaunay simplices added to tie pieces to the rest
 };
 
 /** \brief X's boundary, split into a closed 2-manifold (a sheet once per side, points copied per
-  * side), with as few pieces as the split allows. The split separates pieces of X that meet at a
-  * single vertex, or that it splits apart along an edge (a triangle at the rim of a scan, hanging
-  * from one corner), which would come out as closed pieces of their own; each is tied to the rest
-  * by the fewest Delaunay triangles around the shared vertex that join them, added as a sheet,
-  * until a round ties nothing new. They are faces of the triangulation, so the shell still cannot
-  * intersect itself.
+  * side), with fewer pieces than the split alone gives. The split separates pieces of X that
+  * meet at a single vertex, or that it cannot keep joined along an edge (a triangle hanging from
+  * the rim of a scan), which come out as closed pieces of their own. In rounds, each is tied to
+  * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
+  * edge, or the triangles around the vertex, whose largest is as small as can be), unless they
+  * would meet the shell along another edge; a round is kept only if it leaves fewer pieces and no
+  * new handle. The ties are faces of the triangulation, so the shell still cannot intersect itself.
+  * \param[in] positions per vertex of \a complex
   * \param[in] neighbours per tetrahedron, the tetrahedron across each facet, as for SolidLabelling */
 TwoSidedShell
-twoSidedShell (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x);
+twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& positions,
+               const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x);
 
 } // namespace pcl_wrap::detail

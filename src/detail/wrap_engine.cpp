@@ -214,7 +214,7 @@ WrapEngine::extractSurface ()
   {
     // The labelled solid is not Wrap's and leaves points off its surface: the points are one
     // layer, and X is that layer.
-    TwoSidedShell shell = twoSidedShell (complex, neighbours_, *x_);
+    TwoSidedShell shell = twoSidedShell (complex, vertex_positions_, neighbours_, *x_);
     if (verticesOn (shell.w.triangles) > verticesOn (w_.triangles))
     {
       w_ = std::move (shell.w);
