@@ -96,7 +96,7 @@ sphereAngleCosine (double rho2, double ha, double hb)
 SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra,
                                 const FilledInParallel<std::uint32_t>& neighbours,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
-  : tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
+  : neighbours_ (neighbours), tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
 {
   const std::size_t n = tets_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
@@ -144,7 +144,6 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     for (int i = 0; i < 4; ++i)
     {
       const std::uint32_t u = neighbours[4 * t + i];
-      r.across[i] = u;
       if (u == NO_NEIGHBOUR || u > t)
         r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
     }
@@ -152,10 +151,10 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
   parallelForEach (n, [&] (std::size_t t) {
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t u = tets_[t].across[i];
+      const std::uint32_t u = neighbours[4 * t + i];
       if (u != NO_NEIGHBOUR && u < t)
         for (int j = 0; j < 4; ++j)
-          if (tets_[u].across[j] == t)
+          if (neighbours[4 * std::size_t (u) + j] == t)
             tets_[t].vote[i] = tets_[u].vote[j];
     }
   });
@@ -182,7 +181,7 @@ SolidLabelling::castFrom (std::uint32_t t)
   const std::uint8_t other = r.label == INSIDE ? OUTSIDE : INSIDE;
   for (int i = 0; i < 4; ++i)
   {
-    const std::uint32_t u = r.across[i];
+    const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
     if (u != NO_NEIGHBOUR && tets_[u].label == UNKNOWN)
       cast (u, r.vote[i] < 0 ? other : r.label, r.vote[i]);
   }
@@ -221,31 +220,59 @@ SolidLabelling::flood ()
 {
   for (std::uint32_t t = 0; t < tets_.size (); ++t)
     for (int i = 0; i < 4; ++i)
-      if (tets_[t].across[i] == NO_NEIGHBOUR)
+      if (neighbours_[4 * std::size_t (t) + i] == NO_NEIGHBOUR)
         cast (t, tets_[t].vote[i] < 0 ? INSIDE : OUTSIDE, tets_[t].vote[i]);
   run (nullptr);
+  std::vector<std::vector<std::uint32_t>> (BUCKETS).swap (queue_); // every bucket is empty: free them
+  // With no tie for X to break, the labels are final: kept in 5 bytes per tetrahedron instead of
+  // the flood's 16 while X is computed.
+  const auto reached = [&] { // by some vote: every tetrahedron of a connected triangulation is
+    for (const Record& r : tets_)
+      if (r.label == UNKNOWN)
+        return false;
+    return true;
+  };
+  if (tied_.empty () && reached ())
+  {
+    finished_ = labelsOf (nullptr);
+    FilledInParallel<Record> ().swap (tets_);
+  }
+}
+
+SolidLabels
+SolidLabelling::labelsOf (const Subcomplex* x) const
+{
+  // A tetrahedron no vote reached (none on a connected triangulation) follows X.
+  const std::size_t n = tets_.size ();
+  SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    const Record& r = tets_[t];
+    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x && x->contains ({3, static_cast<SimplexId> (t)}));
+    labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
+  }
+  return labels;
 }
 
 SolidLabels
 SolidLabelling::labels (const Subcomplex& x)
 {
-  // Ties are votes of exactly equal strength, the last the flood reaches: broken by X, and the
-  // flood finished from them.
-  for (std::uint32_t t : tied_)
+  SolidLabels labels;
+  if (finished_)
+    labels = std::move (*finished_);
+  else
   {
-    tets_[t].label = x.contains ({3, t}) ? INSIDE : OUTSIDE;
-    castFrom (t);
+    // Ties are votes of exactly equal strength, the last the flood reaches: broken by X, and the
+    // flood finished from them.
+    for (std::uint32_t t : tied_)
+    {
+      tets_[t].label = x.contains ({3, t}) ? INSIDE : OUTSIDE;
+      castFrom (t);
+    }
+    tied_.clear ();
+    run (&x);
+    labels = labelsOf (&x);
   }
-  tied_.clear ();
-  run (&x);
-  // A tetrahedron no vote reached (none on a connected triangulation) follows X.
-  const std::size_t n = tets_.size ();
-  SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
-  parallelForEach (n, [&] (std::size_t t) {
-    const Record& r = tets_[t];
-    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x.contains ({3, static_cast<SimplexId> (t)}));
-    labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
-  });
   const bool any_inside = std::find (labels.inside.begin (), labels.inside.end (), 1) != labels.inside.end ();
   // Every sphere voted for the outside (a few points, e.g. a box's corners around its centre): the
   // votes enclose nothing, and the solid is the convex hull.

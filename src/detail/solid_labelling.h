@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -44,7 +45,7 @@ class SolidLabelling
 public:
   /** \param[in] tetrahedra four vertex ids per tetrahedron
     * \param[in] neighbours per tetrahedron, the tetrahedron across each facet (opposite the
-    *            vertex of the same slot) or NO_NEIGHBOUR on the hull */
+    *            vertex of the same slot) or NO_NEIGHBOUR on the hull; read until labels() */
   SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const FilledInParallel<std::uint32_t>& neighbours,
                   const std::vector<Point3>& positions, const std::vector<double>& weights);
 
@@ -55,27 +56,29 @@ public:
   SolidLabels labels (const Subcomplex& x);
 
 private:
-  /** Per tetrahedron, everything the flood reads and writes, in half a cache line: the flood
-    * visits tetrahedra in priority order, all over the mesh, so a visit costs one memory access.
-    * Votes and evidence are fixed point, finer than the flood's buckets. */
-  struct alignas (32) Record
+  /** Per tetrahedron, what the flood reads and writes besides its neighbours, in a quarter of a
+    * cache line: the flood visits tetrahedra in priority order, all over the mesh. Votes and
+    * evidence are fixed point, finer than the flood's buckets. */
+  struct alignas (16) Record
   {
-    std::uint32_t across[4]; ///< the tetrahedron across each facet, NO_NEIGHBOUR on the hull
     std::int16_t vote[4];    ///< the vote cast across each facet
     std::uint16_t in, out;   ///< the strongest vote received so far for each side
     std::uint8_t label;
   };
-  static_assert (sizeof (Record) == 32);
+  static_assert (sizeof (Record) == 16);
   static constexpr int BUCKETS = 4096; ///< of the margin between the votes for the two sides
 
   void cast (std::uint32_t t, std::uint8_t side, int vote);
   void castFrom (std::uint32_t t);
   void run (const Subcomplex* x); ///< without X, ties are set aside
+  SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
 
+  const FilledInParallel<std::uint32_t>& neighbours_;
   FilledInParallel<Record> tets_;
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
   int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
   std::vector<std::uint32_t> tied_;
+  std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, the records freed
 };
 
 /** \brief The tetrahedra flagged in \a inside and all their faces, per dimension: the subcomplex

@@ -111,7 +111,8 @@ WrapEngine::startSolidLabelling ()
     return;
   // The votes on all threads now; the flood on one thread while the others build the complex
   // and compute X, which it needs only to break exact ties (SolidLabelling::labels()).
-  labelling_.emplace (triangulation_.top_simplices, triangulation_.neighbours, vertex_positions_, vertex_weights_);
+  neighbours_ = std::move (triangulation_.neighbours); // the labelling and the repair read them
+  labelling_.emplace (triangulation_.top_simplices, neighbours_, vertex_positions_, vertex_weights_);
   clock_.stageDone ("votes");
   flooding_.run ([this] { labelling_->flood (); });
 }
@@ -119,11 +120,12 @@ WrapEngine::startSolidLabelling ()
 void
 WrapEngine::buildComplex ()
 {
-  SimplicialComplex built (dimension_, static_cast<std::uint32_t> (input_indices_.size ()),
-                           std::move (triangulation_.top_simplices), triangulation_.neighbours);
-  complex_ = std::make_shared<SimplicialComplex> (std::move (built));
-  if (cleanSurface ())
+  if (cleanSurface () && !labelling_) // the labelling took them over already when it started
     neighbours_ = std::move (triangulation_.neighbours);
+  const FilledInParallel<std::uint32_t>& neighbours = cleanSurface () ? neighbours_ : triangulation_.neighbours;
+  SimplicialComplex built (dimension_, static_cast<std::uint32_t> (input_indices_.size ()),
+                           std::move (triangulation_.top_simplices), neighbours);
+  complex_ = std::make_shared<SimplicialComplex> (std::move (built));
   triangulation_ = {};
   clock_.stageDone ("complex");
 }
