@@ -21,8 +21,8 @@ namespace pcl_wrap::detail
 /** \brief Is the sample a single layer, with no volume behind it (a terrain, a scan seen from one
   * side)? Then Wrap's flow has collapsed the space under the points, and most of the tetrahedra
   * that the labelling put inside, which close the layer with its convex hull, are not in X.
-  * On a closed object X holds nearly all of them (it is larger than the solid: it webs across
-  * concavities). */
+  * On a closed object X holds most of them, as a rule nearly all (it is larger than the solid:
+  * it webs across concavities). */
 bool
 isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& inside);
 
