@@ -379,6 +379,10 @@ checkPlyHeader (const std::string& path)
   }
   if (!in)
     bad ("no end_header");
+  // PCL reads "end_header" only as a word of its own, and takes a line that merely starts with it
+  // as more header (found by fuzzing: an element declared there was never checked here).
+  if (line.find_first_not_of (" \t\r", 10) != std::string::npos)
+    bad ("text after end_header on its line");
   if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
     bad ("unknown format '" + format + "'");
   const std::uint64_t start = static_cast<std::uint64_t> (in.tellg ());

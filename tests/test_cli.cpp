@@ -190,6 +190,7 @@ malformedFiles ()
       {"huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
                          "property float z\nend_header\n0 0 0\n"},
       {"no_properties.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 99999999999993\nend_header\n"},
+      {"glued_end_header.ply", "ply\nformat binary_little_endian 1.0\nend_headerelement vertex 99999999999993\nend_header\n"},
       {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
       {"empty.pcd", ""},
       {"junk.pcd", junk},
