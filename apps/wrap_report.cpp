@@ -167,7 +167,7 @@ writeStatisticsJson (std::ostream& out, const WrapResult& result)
   out << "},\"manifold\":{\"pinch_edges_split\":" << s.pinch_edges_split
       << ",\"pinch_vertices_split\":" << s.pinch_vertices_split
       << ",\"sheet_triangles_doubled\":" << s.sheet_triangles_doubled << ",\"single_layer\":"
-      << (s.single_layer ? "true" : "false") << ",\"bridge_triangles\":" << s.bridge_triangles << ",\"copies\":";
+      << (s.single_layer ? "true" : "false") << ",\"bridge_simplices\":" << s.bridge_simplices << ",\"copies\":";
   writeList (out, result.copies);
   out << "},\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
       << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
@@ -207,7 +207,7 @@ printSummary (std::ostream& out, const WrapStatistics& s)
     out << "; split " << s.pinch_edges_split << " pinch edges, " << s.pinch_vertices_split << " pinch vertices, "
         << s.sheet_triangles_doubled << " sheet triangles doubled";
   if (s.single_layer)
-    out << "; the points are a single layer: a two-sided shell, " << s.bridge_triangles << " simplices tie its pieces";
+    out << "; the points are a single layer: a two-sided shell, " << s.bridge_simplices << " simplices tie its pieces";
   out << "\n"
       << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
   for (std::size_t i = 0; i < s.timings.size (); ++i)

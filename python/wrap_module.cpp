@@ -83,7 +83,7 @@ statistics (const WrapStatistics& s)
   d["sheet_triangles_doubled"] = s.sheet_triangles_doubled;
   d["tetrahedra_moved"] = s.tetrahedra_moved;
   d["single_layer"] = s.single_layer;
-  d["bridge_triangles"] = s.bridge_triangles;
+  d["bridge_simplices"] = s.bridge_simplices;
   d["w_triangles"] = s.w_triangles;
   d["w_dangling_edges"] = s.w_dangling_edges;
   d["w_isolated_vertices"] = s.w_isolated_vertices;

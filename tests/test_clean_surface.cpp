@@ -117,7 +117,7 @@ TEST (CleanSurface, TerrainGivesATwoSidedShellThroughItsPoints)
     for (PointIndex v : t)
       on.insert (v < terrain.size () ? v : r.copies[v - terrain.size ()]);
   EXPECT_GE (on.size () * 100, terrain.size () * 99) << on.size () << " of " << terrain.size () << " points on it";
-  EXPECT_GT (r.statistics.bridge_triangles, 0u);
+  EXPECT_GT (r.statistics.bridge_simplices, 0u);
 
   // Pieces of X that the split separates at a vertex are tied together: fewer pieces than X's
   // split alone, and none but a few at the rim.

@@ -139,7 +139,7 @@ struct WrapStatistics
   bool single_layer = false;
   /** \brief With single_layer: Delaunay triangles and tetrahedra added to tie pieces of the shell
     * that the split separated at a vertex to the rest. */
-  std::size_t bridge_triangles = 0;
+  std::size_t bridge_simplices = 0;
 
   std::size_t w_triangles = 0;
   std::size_t w_dangling_edges = 0;

@@ -245,12 +245,11 @@ SolidLabelling::labelsOf (const Subcomplex* x) const
   // A tetrahedron no vote reached (none on a connected triangulation) follows X.
   const std::size_t n = tets_.size ();
   SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
-  for (std::size_t t = 0; t < n; ++t)
-  {
+  parallelForEach (n, [&] (std::size_t t) {
     const Record& r = tets_[t];
     labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x && x->contains ({3, static_cast<SimplexId> (t)}));
     labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
-  }
+  });
   return labels;
 }
 

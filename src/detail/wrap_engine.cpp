@@ -212,18 +212,19 @@ WrapEngine::extractSurface ()
       w_ = extractBoundary (complex, *pinched_solid_);
     }
   }
-  if (single_layer && verticesOn (w_.triangles) < complex.numVertices ())
+  const std::size_t on_solid = single_layer ? verticesOn (w_.triangles) : 0;
+  if (single_layer && on_solid < complex.numVertices ())
   {
     // The labelled solid is not Wrap's and leaves points off its surface: the points are one
     // layer, and X is that layer.
     TwoSidedShell shell = twoSidedShell (complex, vertex_positions_, neighbours_, *x_);
-    if (verticesOn (shell.w.triangles) > verticesOn (w_.triangles))
+    if (verticesOn (shell.w.triangles) > on_solid)
     {
       w_ = std::move (shell.w);
       split_ = std::move (shell.split);
       pinched_solid_.reset ();
       result_.statistics.single_layer = true;
-      result_.statistics.bridge_triangles = shell.bridges;
+      result_.statistics.bridge_simplices = shell.bridges;
     }
   }
   neighbours_ = {};
