@@ -172,12 +172,12 @@ linkPath (const std::vector<LinkEdge>& link, const std::vector<std::uint32_t>& f
   return {};
 }
 
-/** Does a bridge \a path meet the shell along an edge other than those of the triangles it
-  * joins (\a mine, \a theirs: (u, piece, x, y) for the triangles (u, x, y))? It would close a loop
-  * through the shell there: a handle. */
+/** Does simplex \a g of a bridge meet the shell along an edge other than those of the triangles
+  * it joins (\a mine, \a theirs: (u, piece, x, y) for the triangles (u, x, y))? The bridge would
+  * close a loop through the shell there: a handle. */
 bool
-meetsElsewhere (const SimplicialComplex& complex, const std::vector<Simplex>& path,
-                const std::vector<std::uint8_t>& edge_in_k, const std::vector<std::array<std::uint32_t, 4>>& mine,
+meetsElsewhere (const SimplicialComplex& complex, Simplex g, const std::vector<std::uint8_t>& edge_in_k,
+                const std::vector<std::array<std::uint32_t, 4>>& mine,
                 const std::vector<std::array<std::uint32_t, 4>>& theirs)
 {
   const auto joined = [&] (std::uint32_t x, std::uint32_t y) {
@@ -190,14 +190,13 @@ meetsElsewhere (const SimplicialComplex& complex, const std::vector<Simplex>& pa
       }
     return false;
   };
-  for (const Simplex g : path)
-    for (int i = 0; i <= g.dim; ++i)
-      for (int j = 0; j < i; ++j)
-      {
-        const Simplex e = complex.face (g.dim, g.id, (1u << i) | (1u << j));
-        if (edge_in_k[e.id] && !joined (complex.vertex (1, e.id, 0), complex.vertex (1, e.id, 1)))
-          return true;
-      }
+  for (int i = 0; i <= g.dim; ++i)
+    for (int j = 0; j < i; ++j)
+    {
+      const Simplex e = complex.face (g.dim, g.id, (1u << i) | (1u << j));
+      if (edge_in_k[e.id] && !joined (complex.vertex (1, e.id, 0), complex.vertex (1, e.id, 1)))
+        return true;
+    }
   return false;
 }
 
@@ -334,14 +333,146 @@ bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
     // Pieces that share an edge (u, a) were split apart there: as one sheet, both its sides would
     // close up at u and a. The tetrahedra around the edge from one piece's triangle to the
     // other's make them one solid wedge there; pieces that share only u get a fan of triangles.
-    const std::vector<Simplex> path = shared.empty ()
-                                          ? linkPath (linkOf (complex, positions, star, u), from, to)
-                                          : linkPath (linkOf (complex, positions, star, u, shared.front ()),
-                                                      around (mine, shared.front ()), around (theirs, shared.front ()));
-    if (!meetsElsewhere (complex, path, edge_in_k, mine, theirs))
-      added.insert (added.end (), path.begin (), path.end ());
+    // Either way round, a path only through simplices that meet no other edge of the shell.
+    std::vector<LinkEdge> link = shared.empty () ? linkOf (complex, positions, star, u)
+                                                 : linkOf (complex, positions, star, u, shared.front ());
+    link.erase (std::remove_if (link.begin (), link.end (),
+                                [&] (const LinkEdge& e) { return meetsElsewhere (complex, e.simplex, edge_in_k, mine, theirs); }),
+                link.end ());
+    const std::vector<Simplex> path =
+        shared.empty () ? linkPath (link, from, to)
+                        : linkPath (link, around (mine, shared.front ()), around (theirs, shared.front ()));
+    added.insert (added.end (), path.begin (), path.end ());
   }
   return added;
+}
+
+/** Joins pieces that the split left apart along an edge. Where a piece meets another only along
+  * the points a, b of an edge, two triangles each (a triangle hanging from the rim of a scan,
+  * closed as a piece of its own), each piece's triangle running from a to b and the other's
+  * running back make a quadrilateral x, d, y, z around (a, b), one per side; each takes the other
+  * diagonal, (x, d, z) and (d, y, z), and the pieces' copies of a and b become one. The edge
+  * (a, b) leaves the surface; every edge stays in two triangles, once each way, and two spheres
+  * make one. Returns how many joins it made. */
+std::size_t
+joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
+{
+  auto& triangles = split.triangles;
+  const auto base = [&] (std::uint32_t v) { return v < nv ? v : split.copy_of[v - nv]; };
+  std::vector<std::uint32_t> piece (nv + split.copy_of.size ());
+  std::iota (piece.begin (), piece.end (), 0u);
+  for (const auto& t : triangles)
+  {
+    piece[findRoot (piece, t[1])] = findRoot (piece, t[0]);
+    piece[findRoot (piece, t[2])] = findRoot (piece, t[0]);
+  }
+  // Every triangle side, by the undirected edge of the points it joins.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> by_edge;
+  by_edge.reserve (3 * triangles.size ());
+  for (std::uint32_t i = 0; i < triangles.size (); ++i)
+    for (int k = 0; k < 3; ++k)
+      by_edge.emplace_back (edgeKey (base (triangles[i][k]), base (triangles[i][(k + 1) % 3])), i);
+  std::sort (by_edge.begin (), by_edge.end ());
+
+  std::vector<std::uint32_t> merged (piece.size ()), same (piece.size ()); // pieces joined; ids made one
+  std::iota (merged.begin (), merged.end (), 0u);
+  std::iota (same.begin (), same.end (), 0u);
+  std::vector<std::uint8_t> gone (triangles.size (), 0);
+  std::vector<std::array<std::uint32_t, 3>> added;
+  std::size_t joins = 0;
+  for (std::size_t e = 0; e < by_edge.size ();)
+  {
+    std::size_t f = e;
+    while (f < by_edge.size () && by_edge[f].first == by_edge[e].first)
+      ++f;
+    if (f - e != 4)
+    {
+      e = f;
+      continue;
+    }
+    const std::uint32_t a = std::uint32_t (by_edge[e].first >> 32), b = std::uint32_t (by_edge[e].first);
+    // Per piece, its two triangles (a, b, z) as (a's id, b's id, z, runs from a to b).
+    std::array<std::uint32_t, 4> on{};
+    for (int k = 0; k < 4; ++k)
+      on[k] = by_edge[e + k].second;
+    e = f;
+    std::sort (on.begin (), on.end (), [&] (std::uint32_t i, std::uint32_t j) {
+      return std::make_pair (findRoot (piece, triangles[i][0]), i) < std::make_pair (findRoot (piece, triangles[j][0]), j);
+    });
+    const std::uint32_t p = findRoot (piece, triangles[on[0]][0]), q = findRoot (piece, triangles[on[2]][0]);
+    if (std::any_of (on.begin (), on.end (), [&] (std::uint32_t i) { return gone[i]; }) || p == q ||
+        findRoot (piece, triangles[on[1]][0]) != p || findRoot (piece, triangles[on[3]][0]) != q ||
+        findRoot (merged, p) == findRoot (merged, q))
+      continue;
+    std::array<std::array<std::uint32_t, 4>, 4> corner{};
+    for (int k = 0; k < 4; ++k)
+    {
+      std::array<std::uint32_t, 3> t = triangles[on[k]];
+      while (base (t[0]) != a)
+        std::rotate (t.begin (), t.begin () + 1, t.end ());
+      const bool forward = base (t[1]) == b;
+      corner[k] = {t[0], forward ? t[1] : t[2], forward ? t[2] : t[1], std::uint32_t (forward)};
+    }
+    // Each piece's ids of a and b agree, and each piece has one triangle each way.
+    bool fits = true;
+    for (int k = 0; k < 4; k += 2)
+      fits = fits && corner[k][0] == corner[k + 1][0] && corner[k][1] == corner[k + 1][1] &&
+             corner[k][3] != corner[k + 1][3];
+    if (!fits)
+      continue;
+    const auto& s_ab = corner[0][3] ? corner[0] : corner[1]; // p's triangle from a to b
+    const auto& s_ba = corner[0][3] ? corner[1] : corner[0];
+    const auto& m_ab = corner[2][3] ? corner[2] : corner[3]; // q's
+    const auto& m_ba = corner[2][3] ? corner[3] : corner[2];
+    if (s_ab[2] == s_ba[2] && m_ab[2] == m_ba[2])
+      continue; // both diagonals would join the same two vertices
+    const std::uint32_t ia = s_ab[0], ib = s_ab[1];
+    added.push_back ({ia, m_ba[2], s_ab[2]}); // p's a -> b, q's b -> a: x = a, y = b
+    added.push_back ({m_ba[2], ib, s_ab[2]});
+    added.push_back ({ib, m_ab[2], s_ba[2]}); // p's b -> a, q's a -> b: x = b, y = a
+    added.push_back ({m_ab[2], ia, s_ba[2]});
+    same[m_ab[0]] = ia;
+    same[m_ab[1]] = ib;
+    for (std::uint32_t i : on)
+      gone[i] = 1;
+    merged[findRoot (merged, q)] = findRoot (merged, p);
+    ++joins;
+  }
+  if (joins == 0)
+    return 0;
+  std::size_t n = 0;
+  for (std::uint32_t i = 0; i < triangles.size (); ++i)
+    if (!gone[i])
+      triangles[n++] = triangles[i];
+  triangles.resize (n);
+  triangles.insert (triangles.end (), added.begin (), added.end ());
+  for (auto& t : triangles)
+    for (std::uint32_t& v : t)
+      v = findRoot (same, v);
+  return joins;
+}
+
+/** Drops the copies of points that no triangle of \a split uses any more. */
+void
+dropUnusedCopies (ManifoldSplit& split, std::uint32_t nv)
+{
+  std::vector<std::uint32_t> renamed (split.copy_of.size (), NONE);
+  for (const auto& t : split.triangles)
+    for (std::uint32_t v : t)
+      if (v >= nv)
+        renamed[v - nv] = 0;
+  std::uint32_t kept = 0;
+  for (std::uint32_t c = 0; c < renamed.size (); ++c)
+    if (renamed[c] != NONE)
+    {
+      split.copy_of[kept] = split.copy_of[c];
+      renamed[c] = nv + kept++;
+    }
+  split.copy_of.resize (kept);
+  for (auto& t : split.triangles)
+    for (std::uint32_t& v : t)
+      if (v >= nv)
+        v = renamed[v - nv];
 }
 
 } // namespace
@@ -416,6 +547,8 @@ twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& posi
     shell = std::move (tied);
     now = then;
   }
+  if (now.pieces > 1 && joinAlongSharedEdges (shell.split, complex.numVertices ()) > 0)
+    dropUnusedCopies (shell.split, complex.numVertices ());
   return shell;
 }
 

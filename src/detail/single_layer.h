@@ -45,7 +45,9 @@ struct TwoSidedShell
   * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
   * edge, or the triangles around the vertex, whose largest is as small as can be), unless they
   * would meet the shell along another edge; a round is kept only if it leaves fewer pieces and no
-  * new handle. The ties are faces of the triangulation, so the shell still cannot intersect itself.
+  * new handle. The ties are faces of the triangulation. A piece that is left meeting another only
+  * along an edge is joined to it by taking the other diagonal of the two quadrilaterals around
+  * that edge, one per side: four triangles that are not Delaunay faces.
   * \param[in] positions per vertex of \a complex
   * \param[in] neighbours per tetrahedron, the tetrahedron across each facet, as for SolidLabelling */
 TwoSidedShell
