@@ -265,7 +265,13 @@ private:
     parallelForEach (n, [&] (std::size_t t) { root[t] = static_cast<std::uint32_t> (t); });
     const auto find = [&] (std::uint32_t a) {
       for (std::uint32_t up; (up = relaxedLoad (&root[a])) != a;)
-        a = up;
+      {
+        // Path halving: a non-root's entry is only ever read or pointed further up its tree.
+        const std::uint32_t above = relaxedLoad (&root[up]);
+        if (above != up)
+          relaxedStore (&root[a], above);
+        a = above;
+      }
       return a;
     };
     parallelForEach (n, [&] (std::size_t t) {
