@@ -200,6 +200,20 @@ meetsElsewhere (const SimplicialComplex& complex, Simplex g, const std::vector<s
   return false;
 }
 
+/** The squared length of the longest edge of the triangles (u, piece, x, y) = (u, x, y). */
+double
+longestSide (const std::vector<Point3>& positions, const std::vector<std::array<std::uint32_t, 4>>& triangles)
+{
+  double longest = 0.0;
+  for (const auto& t : triangles)
+    for (const auto& [i, j] : {std::pair{0, 2}, std::pair{0, 3}, std::pair{2, 3}})
+    {
+      const Point3 &p = positions[t[i]], &q = positions[t[j]];
+      longest = std::max (longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+    }
+  return longest;
+}
+
 /** The pieces of a closed surface and its Euler characteristic. */
 struct Topology
 {
@@ -236,8 +250,9 @@ topologyOf (const std::vector<std::array<std::uint32_t, 3>>& triangles)
 
 /** The simplices that tie together the pieces of \a split (connected through edges) that share
   * a vertex: for each pair of pieces to join, at their lowest shared vertex u, the tetrahedra
-  * around an edge they share or the triangles around u from one to the other, unless that would
-  * make a handle (meetsElsewhere). \a edge_in_k: per edge, in the complex split. */
+  * around an edge they share or the triangles around u from one to the other, through none that
+  * would make a handle (meetsElsewhere) or is longer than the triangles joined. \a edge_in_k:
+  * per edge, in the complex split. */
 std::vector<Simplex>
 bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
          const FilledInParallel<std::uint32_t>& neighbours, const std::vector<std::uint8_t>& edge_in_k,
@@ -333,11 +348,15 @@ bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
     // Pieces that share an edge (u, a) were split apart there: as one sheet, both its sides would
     // close up at u and a. The tetrahedra around the edge from one piece's triangle to the
     // other's make them one solid wedge there; pieces that share only u get a fan of triangles.
-    // Either way round, a path only through simplices that meet no other edge of the shell.
+    // Either way round, a path only through simplices that meet no other edge of the shell and
+    // are no longer than the triangles joined: a longer one would lie across the layer.
     std::vector<LinkEdge> link = shared.empty () ? linkOf (complex, positions, star, u)
                                                  : linkOf (complex, positions, star, u, shared.front ());
+    const double longest = std::max (longestSide (positions, mine), longestSide (positions, theirs));
     link.erase (std::remove_if (link.begin (), link.end (),
-                                [&] (const LinkEdge& e) { return meetsElsewhere (complex, e.simplex, edge_in_k, mine, theirs); }),
+                                [&] (const LinkEdge& e) {
+                                  return e.size > longest || meetsElsewhere (complex, e.simplex, edge_in_k, mine, theirs);
+                                }),
                 link.end ());
     const std::vector<Simplex> path =
         shared.empty () ? linkPath (link, from, to)
@@ -347,13 +366,13 @@ bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
   return added;
 }
 
-/** Joins pieces that the split left apart along an edge. Where a piece meets another only along
-  * the points a, b of an edge, two triangles each (a triangle hanging from the rim of a scan,
-  * closed as a piece of its own), each piece's triangle running from a to b and the other's
-  * running back make a quadrilateral x, d, y, z around (a, b), one per side; each takes the other
-  * diagonal, (x, d, z) and (d, y, z), and the pieces' copies of a and b become one. The edge
-  * (a, b) leaves the surface; every edge stays in two triangles, once each way, and two spheres
-  * make one. Returns how many joins it made. */
+/** Joins pieces that the split left apart along an edge. Where k >= 2 pieces meet only along the
+  * points a, b of an edge, two triangles each (triangles hanging from the rim of a scan, each
+  * closed as a piece of its own), the pieces are taken in a cycle: piece i's triangle (a, b, u)
+  * and the next piece's (b, a, w) make a quadrilateral, which takes the other diagonal: (a, w, u)
+  * and (w, b, u). The pieces' copies of a and b become one and the edge (a, b) leaves the
+  * surface; every edge stays in two triangles, once each way, and k spheres make one. Returns
+  * how many pieces it joined to others. */
 std::size_t
 joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
 {
@@ -377,7 +396,7 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
   std::vector<std::uint32_t> merged (piece.size ()), same (piece.size ()); // pieces joined; ids made one
   std::iota (merged.begin (), merged.end (), 0u);
   std::iota (same.begin (), same.end (), 0u);
-  std::vector<std::uint8_t> gone (triangles.size (), 0);
+  std::vector<std::uint8_t> gone (triangles.size (), 0), busy (piece.size (), 0);
   std::vector<std::array<std::uint32_t, 3>> added;
   std::size_t joins = 0;
   for (std::size_t e = 0; e < by_edge.size ();)
@@ -385,58 +404,75 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
     std::size_t f = e;
     while (f < by_edge.size () && by_edge[f].first == by_edge[e].first)
       ++f;
-    if (f - e != 4)
-    {
-      e = f;
-      continue;
-    }
     const std::uint32_t a = std::uint32_t (by_edge[e].first >> 32), b = std::uint32_t (by_edge[e].first);
-    // Per piece, its two triangles (a, b, z) as (a's id, b's id, z, runs from a to b).
-    std::array<std::uint32_t, 4> on{};
-    for (int k = 0; k < 4; ++k)
-      on[k] = by_edge[e + k].second;
+    std::vector<std::uint32_t> on;
+    for (std::size_t k = e; k < f; ++k)
+      on.push_back (by_edge[k].second);
     e = f;
+    if (on.size () < 4 || on.size () % 2 != 0 ||
+        std::any_of (on.begin (), on.end (), [&] (std::uint32_t i) { return gone[i]; }))
+      continue;
     std::sort (on.begin (), on.end (), [&] (std::uint32_t i, std::uint32_t j) {
       return std::make_pair (findRoot (piece, triangles[i][0]), i) < std::make_pair (findRoot (piece, triangles[j][0]), j);
     });
-    const std::uint32_t p = findRoot (piece, triangles[on[0]][0]), q = findRoot (piece, triangles[on[2]][0]);
-    if (std::any_of (on.begin (), on.end (), [&] (std::uint32_t i) { return gone[i]; }) || p == q ||
-        findRoot (piece, triangles[on[1]][0]) != p || findRoot (piece, triangles[on[3]][0]) != q ||
-        findRoot (merged, p) == findRoot (merged, q))
-      continue;
-    std::array<std::array<std::uint32_t, 4>, 4> corner{};
-    for (int k = 0; k < 4; ++k)
-    {
-      std::array<std::uint32_t, 3> t = triangles[on[k]];
-      while (base (t[0]) != a)
-        std::rotate (t.begin (), t.begin () + 1, t.end ());
-      const bool forward = base (t[1]) == b;
-      corner[k] = {t[0], forward ? t[1] : t[2], forward ? t[2] : t[1], std::uint32_t (forward)};
-    }
-    // Each piece's ids of a and b agree, and each piece has one triangle each way.
+    // Per piece: its triangle from a to b and its triangle back, as (a's id, b's id, third vertex).
+    const std::size_t k = on.size () / 2;
+    std::vector<std::uint32_t> owner (k);
+    std::vector<std::array<std::uint32_t, 3>> forth (k), back (k);
     bool fits = true;
-    for (int k = 0; k < 4; k += 2)
-      fits = fits && corner[k][0] == corner[k + 1][0] && corner[k][1] == corner[k + 1][1] &&
-             corner[k][3] != corner[k + 1][3];
-    if (!fits)
+    for (std::size_t i = 0; i < k && fits; ++i)
+    {
+      owner[i] = findRoot (piece, triangles[on[2 * i]][0]);
+      fits = findRoot (piece, triangles[on[2 * i + 1]][0]) == owner[i] && (i == 0 || owner[i] != owner[i - 1]);
+      int ways = 0;
+      for (std::size_t j = 2 * i; j < 2 * i + 2; ++j)
+      {
+        std::array<std::uint32_t, 3> t = triangles[on[j]];
+        while (base (t[0]) != a)
+          std::rotate (t.begin (), t.begin () + 1, t.end ());
+        if (base (t[1]) == b)
+        {
+          forth[i] = t;
+          ways |= 1;
+        }
+        else
+        {
+          back[i] = {t[0], t[2], t[1]};
+          ways |= 2;
+        }
+      }
+      // One triangle each way, through the same copies of a and b, none touched by a join yet.
+      fits = fits && ways == 3 && forth[i][0] == back[i][0] && forth[i][1] == back[i][1];
+      for (const auto* t : {&forth[i], &back[i]})
+        for (std::uint32_t v : *t)
+          fits = fits && !busy[v];
+    }
+    for (std::size_t i = 0; i < k && fits; ++i)
+      for (std::size_t j = 0; j < i && fits; ++j)
+        fits = findRoot (merged, owner[i]) != findRoot (merged, owner[j]);
+    // The new diagonals (u, w), piece i's third vertex and the next piece's, must differ.
+    std::vector<std::uint64_t> diagonals (k);
+    for (std::size_t i = 0; i < k; ++i)
+      diagonals[i] = edgeKey (forth[i][2], back[(i + 1) % k][2]);
+    std::sort (diagonals.begin (), diagonals.end ());
+    if (!fits || std::adjacent_find (diagonals.begin (), diagonals.end ()) != diagonals.end ())
       continue;
-    const auto& s_ab = corner[0][3] ? corner[0] : corner[1]; // p's triangle from a to b
-    const auto& s_ba = corner[0][3] ? corner[1] : corner[0];
-    const auto& m_ab = corner[2][3] ? corner[2] : corner[3]; // q's
-    const auto& m_ba = corner[2][3] ? corner[3] : corner[2];
-    if (s_ab[2] == s_ba[2] && m_ab[2] == m_ba[2])
-      continue; // both diagonals would join the same two vertices
-    const std::uint32_t ia = s_ab[0], ib = s_ab[1];
-    added.push_back ({ia, m_ba[2], s_ab[2]}); // p's a -> b, q's b -> a: x = a, y = b
-    added.push_back ({m_ba[2], ib, s_ab[2]});
-    added.push_back ({ib, m_ab[2], s_ba[2]}); // p's b -> a, q's a -> b: x = b, y = a
-    added.push_back ({m_ab[2], ia, s_ba[2]});
-    same[m_ab[0]] = ia;
-    same[m_ab[1]] = ib;
+    const std::uint32_t ia = forth[0][0], ib = forth[0][1];
+    for (std::size_t i = 0; i < k; ++i)
+    {
+      const std::uint32_t u = forth[i][2], w = back[(i + 1) % k][2];
+      added.push_back ({ia, w, u});
+      added.push_back ({w, ib, u});
+      same[forth[i][0]] = ia;
+      same[forth[i][1]] = ib;
+      merged[findRoot (merged, owner[i])] = findRoot (merged, owner[0]);
+      for (const auto* t : {&forth[i], &back[i]})
+        for (std::uint32_t v : *t)
+          busy[v] = 1;
+    }
     for (std::uint32_t i : on)
       gone[i] = 1;
-    merged[findRoot (merged, q)] = findRoot (merged, p);
-    ++joins;
+    joins += k - 1;
   }
   if (joins == 0)
     return 0;
@@ -547,7 +583,12 @@ twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& posi
     shell = std::move (tied);
     now = then;
   }
-  if (now.pieces > 1 && joinAlongSharedEdges (shell.split, complex.numVertices ()) > 0)
+  // Each pass joins pairs of the pieces it starts from; a piece joined in one may meet the next
+  // one only in the next.
+  std::size_t joined = 0;
+  for (std::size_t j = now.pieces > 1 ? 1 : 0; j > 0; joined += j)
+    j = joinAlongSharedEdges (shell.split, complex.numVertices ());
+  if (joined > 0)
     dropUnusedCopies (shell.split, complex.numVertices ());
   return shell;
 }

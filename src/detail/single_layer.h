@@ -43,11 +43,11 @@ struct TwoSidedShell
   * meet at a single vertex, or that it cannot keep joined along an edge (a triangle hanging from
   * the rim of a scan), which come out as closed pieces of their own. In rounds, each is tied to
   * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
-  * edge, or the triangles around the vertex, whose largest is as small as can be), unless they
-  * would meet the shell along another edge; a round is kept only if it leaves fewer pieces and no
-  * new handle. The ties are faces of the triangulation. A piece that is left meeting another only
-  * along an edge is joined to it by taking the other diagonal of the two quadrilaterals around
-  * that edge, one per side: four triangles that are not Delaunay faces.
+  * edge, or the triangles around the vertex, whose largest is as small as can be), none longer
+  * than the triangles they join nor meeting the shell along another edge; a round is kept only if it leaves fewer pieces and no
+  * new handle. The ties are faces of the triangulation. Pieces left meeting only along an edge are
+  * joined there by taking the other diagonal of the quadrilaterals around it: the only triangles
+  * of the shell that are not Delaunay faces.
   * \param[in] positions per vertex of \a complex
   * \param[in] neighbours per tetrahedron, the tetrahedron across each facet, as for SolidLabelling */
 TwoSidedShell
