@@ -26,6 +26,12 @@ findRoot (std::vector<std::uint32_t>& parent, std::uint32_t a)
   return a;
 }
 
+double
+squaredDistance (const Point3& p, const Point3& q)
+{
+  return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+}
+
 /** The squared length of the longest edge of \a s. */
 double
 longestEdge (const SimplicialComplex& complex, const std::vector<Point3>& positions, Simplex s)
@@ -34,10 +40,7 @@ longestEdge (const SimplicialComplex& complex, const std::vector<Point3>& positi
   const std::uint32_t* v = complex.vertices (s.dim, s.id);
   for (int i = 0; i <= s.dim; ++i)
     for (int j = 0; j < i; ++j)
-    {
-      const Point3 &p = positions[v[i]], &q = positions[v[j]];
-      longest = std::max (longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    }
+      longest = std::max (longest, squaredDistance (positions[v[i]], positions[v[j]]));
   return longest;
 }
 
@@ -207,11 +210,23 @@ longestSide (const std::vector<Point3>& positions, const std::vector<std::array<
   double longest = 0.0;
   for (const auto& t : triangles)
     for (const auto& [i, j] : {std::pair{0, 2}, std::pair{0, 3}, std::pair{2, 3}})
-    {
-      const Point3 &p = positions[t[i]], &q = positions[t[j]];
-      longest = std::max (longest, (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-    }
+      longest = std::max (longest, squaredDistance (positions[t[i]], positions[t[j]]));
   return longest;
+}
+
+/** Per vertex id of \a split (copies included), a union-find parent: vertices of one piece
+  * (connected through triangles) share a root. */
+std::vector<std::uint32_t>
+piecesOf (const ManifoldSplit& split, std::uint32_t nv)
+{
+  std::vector<std::uint32_t> piece (nv + split.copy_of.size ());
+  std::iota (piece.begin (), piece.end (), 0u);
+  for (const auto& t : split.triangles)
+  {
+    piece[findRoot (piece, t[1])] = findRoot (piece, t[0]);
+    piece[findRoot (piece, t[2])] = findRoot (piece, t[0]);
+  }
+  return piece;
 }
 
 /** The pieces of a closed surface and its Euler characteristic. */
@@ -260,13 +275,7 @@ bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
 {
   const std::uint32_t nv = complex.numVertices ();
   const auto base = [&] (std::uint32_t v) { return v < nv ? v : split.copy_of[v - nv]; };
-  std::vector<std::uint32_t> piece (nv + split.copy_of.size ());
-  std::iota (piece.begin (), piece.end (), 0u);
-  for (const auto& t : split.triangles)
-  {
-    piece[findRoot (piece, t[1])] = findRoot (piece, t[0]);
-    piece[findRoot (piece, t[2])] = findRoot (piece, t[0]);
-  }
+  std::vector<std::uint32_t> piece = piecesOf (split, nv);
   // (original vertex, piece, copy) for every corner, to find the vertices shared by pieces.
   std::vector<std::array<std::uint32_t, 3>> corners;
   for (const auto& t : split.triangles)
@@ -378,13 +387,7 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
 {
   auto& triangles = split.triangles;
   const auto base = [&] (std::uint32_t v) { return v < nv ? v : split.copy_of[v - nv]; };
-  std::vector<std::uint32_t> piece (nv + split.copy_of.size ());
-  std::iota (piece.begin (), piece.end (), 0u);
-  for (const auto& t : triangles)
-  {
-    piece[findRoot (piece, t[1])] = findRoot (piece, t[0]);
-    piece[findRoot (piece, t[2])] = findRoot (piece, t[0]);
-  }
+  std::vector<std::uint32_t> piece = piecesOf (split, nv);
   // Every triangle side, by the undirected edge of the points it joins.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> by_edge;
   by_edge.reserve (3 * triangles.size ());
@@ -404,13 +407,14 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
     std::size_t f = e;
     while (f < by_edge.size () && by_edge[f].first == by_edge[e].first)
       ++f;
-    const std::uint32_t a = std::uint32_t (by_edge[e].first >> 32), b = std::uint32_t (by_edge[e].first);
+    const std::size_t first = std::exchange (e, f);
+    if (f - first < 4 || (f - first) % 2 != 0)
+      continue; // an edge of one piece, or of an odd number of triangles
+    const std::uint32_t a = std::uint32_t (by_edge[first].first >> 32), b = std::uint32_t (by_edge[first].first);
     std::vector<std::uint32_t> on;
-    for (std::size_t k = e; k < f; ++k)
+    for (std::size_t k = first; k < f; ++k)
       on.push_back (by_edge[k].second);
-    e = f;
-    if (on.size () < 4 || on.size () % 2 != 0 ||
-        std::any_of (on.begin (), on.end (), [&] (std::uint32_t i) { return gone[i]; }))
+    if (std::any_of (on.begin (), on.end (), [&] (std::uint32_t i) { return gone[i]; }))
       continue;
     std::sort (on.begin (), on.end (), [&] (std::uint32_t i, std::uint32_t j) {
       return std::make_pair (findRoot (piece, triangles[i][0]), i) < std::make_pair (findRoot (piece, triangles[j][0]), j);
@@ -450,12 +454,14 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
     for (std::size_t i = 0; i < k && fits; ++i)
       for (std::size_t j = 0; j < i && fits; ++j)
         fits = findRoot (merged, owner[i]) != findRoot (merged, owner[j]);
+    if (!fits)
+      continue;
     // The new diagonals (u, w), piece i's third vertex and the next piece's, must differ.
     std::vector<std::uint64_t> diagonals (k);
     for (std::size_t i = 0; i < k; ++i)
       diagonals[i] = edgeKey (forth[i][2], back[(i + 1) % k][2]);
     std::sort (diagonals.begin (), diagonals.end ());
-    if (!fits || std::adjacent_find (diagonals.begin (), diagonals.end ()) != diagonals.end ())
+    if (std::adjacent_find (diagonals.begin (), diagonals.end ()) != diagonals.end ())
       continue;
     const std::uint32_t ia = forth[0][0], ib = forth[0][1];
     for (std::size_t i = 0; i < k; ++i)
@@ -586,8 +592,9 @@ twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& posi
   // Each pass joins pairs of the pieces it starts from; a piece joined in one may meet the next
   // one only in the next.
   std::size_t joined = 0;
-  for (std::size_t j = now.pieces > 1 ? 1 : 0; j > 0; joined += j)
-    j = joinAlongSharedEdges (shell.split, complex.numVertices ());
+  if (now.pieces > 1)
+    for (std::size_t j; (j = joinAlongSharedEdges (shell.split, complex.numVertices ())) > 0;)
+      joined += j;
   if (joined > 0)
     dropUnusedCopies (shell.split, complex.numVertices ());
   return shell;
