@@ -375,6 +375,8 @@ bridges (const SimplicialComplex& complex, const std::vector<Point3>& positions,
   return added;
 }
 
+} // namespace
+
 /** Joins pieces that the split left apart along an edge. Where k >= 2 pieces meet only along the
   * points a, b of an edge, two triangles each (triangles hanging from the rim of a scan, each
   * closed as a piece of its own), the pieces are taken in a cycle: piece i's triangle (a, b, u)
@@ -493,6 +495,9 @@ joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv)
       v = findRoot (same, v);
   return joins;
 }
+
+namespace
+{
 
 /** Drops the copies of points that no triangle of \a split uses any more. */
 void

@@ -76,6 +76,9 @@ public:
   const Classification& classification () const { return *classification_; }
   const PowerPredicates& predicates () const { return *predicates_; }
   const Subcomplex& x () const { return *x_; }
+  /** \brief Per tetrahedron, the tetrahedron across each facet (the clean surface's walk), from
+    * buildComplex() until the surface is extracted. */
+  const FilledInParallel<std::uint32_t>& neighbours () const { return neighbours_; }
   /** \brief Per vertex id: its position and weight. */
   const std::vector<Point3>& vertexPositions () const { return vertex_positions_; }
   const std::vector<double>& vertexWeights () const { return vertex_weights_; }

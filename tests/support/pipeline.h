@@ -57,6 +57,8 @@ public:
   const detail::SimplicialComplex& complex = engine_->complex ();
   const detail::PowerPredicates* const predicates = &engine_->predicates ();
   const detail::Classification& classification = engine_->classification ();
+  /** Per tetrahedron, the tetrahedron across each facet (the default output only). */
+  const detail::FilledInParallel<std::uint32_t>& neighbours = engine_->neighbours ();
 
   int dimension () const { return complex.dimension (); }
 

@@ -121,6 +121,21 @@ edgeUses (const std::vector<Triangle>& triangles)
   return uses;
 }
 
+bool
+isOneCycle (const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges)
+{
+  UnionFind cycle;
+  std::map<std::uint32_t, int> degree;
+  for (const auto& [a, b] : edges)
+  {
+    cycle.join (a, b);
+    ++degree[a];
+    ++degree[b];
+  }
+  return !edges.empty () && cycle.roots () == 1 &&
+         std::all_of (degree.begin (), degree.end (), [] (const auto& d) { return d.second == 2; });
+}
+
 SurfaceReport
 describeSurface (const std::vector<Triangle>& triangles)
 {
@@ -147,16 +162,7 @@ describeSurface (const std::vector<Triangle>& triangles)
   {
     if (!r.closed_manifold)
       break;
-    UnionFind cycle;
-    std::map<std::uint32_t, int> degree;
-    for (const auto& [a, b] : edges)
-    {
-      cycle.join (a, b);
-      ++degree[a];
-      ++degree[b];
-    }
-    r.closed_manifold = cycle.roots () == 1 &&
-                        std::all_of (degree.begin (), degree.end (), [] (const auto& d) { return d.second == 2; });
+    r.closed_manifold = isOneCycle (edges);
   }
   return r;
 }

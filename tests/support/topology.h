@@ -42,6 +42,10 @@ struct SurfaceReport
   long euler = 0;
 };
 
+/** Do the edges make one cycle: connected, every vertex on exactly two of them? */
+bool
+isOneCycle (const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
+
 SurfaceReport
 describeSurface (const std::vector<Triangle>& triangles);
 

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
+// vertex against the surface's links found by brute force, and the join of parts cut off the
+// solid through X.
+#include "detail/boundary.h"
+#include "detail/manifold_split.h"
+#include "detail/retraction.h"
+#include "detail/solid_labelling.h"
+#include "detail/solid_pinch_split.h"
+#include "detail/solid_repair.h"
+#include "support/pipeline.h"
+#include "support/samplers.h"
+#include "support/topology.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <random>
+#include <vector>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+using LinkEdges = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+/** Per vertex, the edges opposite it in the surface triangles of the solid \a inside: the facets
+  * of an inside tetrahedron whose other tetrahedron (found by scanning every tetrahedron's facet
+  * ids, not through the engine's neighbours) is outside or missing (the hull). */
+std::vector<LinkEdges>
+surfaceLinks (const detail::SimplicialComplex& complex, const std::vector<std::uint8_t>& inside)
+{
+  std::map<detail::SimplexId, std::vector<detail::SimplexId>> tetrahedra_of_facet;
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    for (int i = 0; i < 4; ++i)
+      tetrahedra_of_facet[complex.facet (3, t, i).id].push_back (t);
+  std::vector<LinkEdges> links (complex.numVertices ());
+  for (const auto& [facet, tetrahedra] : tetrahedra_of_facet)
+  {
+    const std::size_t in = std::count_if (tetrahedra.begin (), tetrahedra.end (), [&] (auto t) { return inside[t]; });
+    if (in != 1 || (tetrahedra.size () == 2 && inside[tetrahedra[0]] == inside[tetrahedra[1]]))
+      continue;
+    const std::uint32_t* v = complex.vertices (2, facet);
+    for (int i = 0; i < 3; ++i)
+      links[v[i]].emplace_back (v[(i + 1) % 3], v[(i + 2) % 3]);
+  }
+  return links;
+}
+
+/** Connected parts of the solid, across facets shared by two inside tetrahedra (brute force). */
+std::size_t
+solidParts (const detail::SimplicialComplex& complex, const std::vector<std::uint8_t>& inside)
+{
+  std::vector<std::uint32_t> parent (complex.size (3));
+  std::iota (parent.begin (), parent.end (), 0u);
+  const auto find = [&] (std::uint32_t a) {
+    while (parent[a] != a)
+      a = parent[a];
+    return a;
+  };
+  std::map<detail::SimplexId, detail::SimplexId> first_of_facet;
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    for (int i = 0; i < 4 && inside[t]; ++i)
+    {
+      const auto [at, is_new] = first_of_facet.emplace (complex.facet (3, t, i).id, t);
+      if (!is_new)
+        parent[find (at->second)] = find (t);
+    }
+  std::size_t parts = 0;
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    parts += inside[t] && find (t) == t;
+  return parts;
+}
+
+/** The surface of a repaired solid as the engine writes it: split where the repair left pinches. */
+std::vector<Triangle>
+repairedSurface (const detail::SimplicialComplex& complex, const detail::FilledInParallel<std::uint32_t>& neighbours,
+                 const std::vector<std::uint8_t>& inside, const std::vector<std::uint32_t>& pinched)
+{
+  const detail::Boundary w = detail::extractSolidBoundary (complex, neighbours, inside);
+  std::optional<detail::ManifoldSplit> split;
+  if (!pinched.empty ())
+    split = detail::splitSolidPinches (complex, neighbours, inside, w, pinched);
+  if (!pinched.empty () && !split)
+  {
+    const detail::Subcomplex solid (complex, detail::solidSubcomplex (complex, inside));
+    split = detail::splitPinches (complex, solid, detail::extractBoundary (complex, solid));
+  }
+  const auto& triangles = split ? split->triangles : w.triangles;
+  return {triangles.begin (), triangles.end ()};
+}
+
+TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
+{
+  std::size_t before = 0, after = 0, moved = 0;
+  for (unsigned seed = 1; seed <= 30; ++seed)
+  {
+    SCOPED_TRACE (seed);
+    const Pipeline p (seed % 2 ? cubeSample (400, seed) : sphereSample (400, seed, 0.05));
+    ASSERT_EQ (p.dimension (), 3);
+    detail::Subcomplex x (p.complex);
+    detail::Retraction (x, p.classification).retract ();
+    // A ball (or X's tetrahedra) with a random fifth of the tetrahedra flipped, random margins.
+    std::mt19937 random (seed);
+    detail::SolidLabels labels;
+    for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+    {
+      double r2 = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        double centre = 0;
+        for (int i = 0; i < 4; ++i)
+          centre += p.points[p.complex.vertex (3, t, i)][c] / 4;
+        r2 += centre * centre;
+      }
+      const bool in = seed % 3 ? r2 < 0.4 : x.contains ({3, t});
+      labels.inside.push_back (in != (random () % 5 == 0));
+      labels.margin.push_back (std::uniform_real_distribution<float> (0.0f, 2.0f) (random));
+    }
+    const std::vector<std::uint8_t> given = labels.inside;
+    for (const auto& link : surfaceLinks (p.complex, given))
+      before += !link.empty () && !isOneCycle (link);
+
+    const detail::SolidRepair repair = detail::repairSolid (p.complex, p.neighbours, x, labels);
+
+    EXPECT_TRUE (std::is_sorted (repair.pinched.begin (), repair.pinched.end ()));
+    EXPECT_TRUE (std::adjacent_find (repair.pinched.begin (), repair.pinched.end ()) == repair.pinched.end ());
+    const std::vector<LinkEdges> links = surfaceLinks (p.complex, labels.inside);
+    for (std::uint32_t v = 0; v < links.size (); ++v)
+    {
+      const bool reported = std::binary_search (repair.pinched.begin (), repair.pinched.end (), v);
+      const bool one_fan = isOneCycle (links[v]);
+      // Reported: the surface touches itself there. Not reported: one fan, or off the surface.
+      if (reported)
+        EXPECT_TRUE (!links[v].empty () && !one_fan) << "vertex " << v << " reported but not pinched";
+      else
+        EXPECT_TRUE (links[v].empty () || one_fan) << "vertex " << v << " pinched but not reported";
+      after += reported;
+    }
+    // Each tetrahedron moves at most once, except that a join may take back one the mending moved.
+    std::size_t changed = 0;
+    for (std::size_t t = 0; t < given.size (); ++t)
+      changed += given[t] != labels.inside[t];
+    EXPECT_LE (changed, repair.flipped);
+    moved += repair.flipped;
+
+    const SurfaceReport surface = describeSurface (repairedSurface (p.complex, p.neighbours, labels.inside, repair.pinched));
+    EXPECT_TRUE (surface.closed_manifold);
+    EXPECT_TRUE (surface.consistently_oriented);
+  }
+  // The labellings were pinched all over; the repair mended nearly all of it.
+  EXPECT_GT (before, 1000u);
+  EXPECT_LT (10 * after, before) << after << " of " << before;
+  EXPECT_GT (moved, 1000u);
+}
+
+TEST (SolidRepair, JoinsAPartCutOffTheSolidThroughX)
+{
+  // X of a dense sphere fills the ball. A slab of it cut out leaves two half balls: X, which is
+  // contractible, ties them together again.
+  const auto points = sphereSample (3000, 4, 1e-3);
+  const Pipeline p (points);
+  detail::Subcomplex x (p.complex);
+  detail::Retraction (x, p.classification).retract ();
+  detail::SolidLabels labels;
+  std::size_t cut = 0;
+  for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+  {
+    double z = 0;
+    for (int i = 0; i < 4; ++i)
+      z += p.points[p.complex.vertex (3, t, i)][2] / 4;
+    const bool in_x = x.contains ({3, t});
+    labels.inside.push_back (in_x && std::abs (z) > 0.1);
+    labels.margin.push_back (1.0f);
+    cut += in_x && !labels.inside.back ();
+  }
+  ASSERT_GT (cut, 100u);
+  ASSERT_GE (solidParts (p.complex, labels.inside), 2u);
+
+  const detail::SolidRepair repair = detail::repairSolid (p.complex, p.neighbours, x, labels);
+
+  EXPECT_EQ (solidParts (p.complex, labels.inside), 1u);
+  const SurfaceReport surface = describeSurface (repairedSurface (p.complex, p.neighbours, labels.inside, repair.pinched));
+  EXPECT_TRUE (surface.closed_manifold);
+  EXPECT_EQ (surface.components, 1u);
+  EXPECT_EQ (surface.euler, 2) << "a sphere";
+}
+
+} // namespace
+} // namespace pcl_wrap::test
