@@ -6,7 +6,7 @@
 // task arena of the requested size.
 #include <pcl_wrap/compute_wrap.h>
 
-#include "detail/wrap_engine.h"
+#include "wrap_engine.h"
 
 #include <tbb/task_arena.h>
 

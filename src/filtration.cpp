@@ -4,8 +4,8 @@
 // X(delta) and W(delta) of the wrap filtration, by a filter over the values.
 #include "filtration_data.h"
 
-#include "detail/boundary.h"
-#include "detail/subcomplex.h"
+#include "wrap/boundary.h"
+#include "wrap/subcomplex.h"
 
 #include <stdexcept>
 

@@ -2,10 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include "detail/classification.h"
-#include "detail/input_indices.h"
-#include "detail/simplicial_complex.h"
-#include "detail/wrap_filtration.h"
+#include "wrap/classification.h"
+#include "input_indices.h"
+#include "delaunay/simplicial_complex.h"
+#include "wrap/wrap_filtration.h"
 
 #include <pcl_wrap/wrap_result.h>
 

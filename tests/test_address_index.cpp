@@ -4,7 +4,7 @@
 // AddressIndex, which numbers CGAL's cells by their addresses, against a map from address to
 // number: objects in blocks of many sizes, with free slots, added block by block in an order
 // unrelated to their addresses (as a compact container iterates).
-#include "detail/address_index.h"
+#include "delaunay/address_index.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include "support/topology.h"
 #include "support/wrap_checks.h"
 
-#include "detail/wrap_filtration.h"
+#include "wrap/wrap_filtration.h"
 
 #include <pcl_wrap/compute_wrap.h>
 

@@ -9,8 +9,8 @@
 #include "support/topology.h"
 #include "support/wrap_checks.h"
 
-#include "detail/front_deletion.h"
-#include "detail/wrap_filtration.h"
+#include "wrap/front_deletion.h"
+#include "wrap/wrap_filtration.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // The surface stage's test of a vertex's link (docs/surface.md §2) against a graph search.
-#include "detail/link_cycle.h"
+#include "surface/link_cycle.h"
 #include "support/topology.h"
 
 #include <gtest/gtest.h>

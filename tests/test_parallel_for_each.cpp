@@ -4,7 +4,7 @@
 // The parallel loop shapes of src/detail against the sequential loops they stand for: the
 // counting sort that names edges and orders tetrahedra must give the order a stable sequential
 // bucket sort gives, on any number of threads, whatever the sizes.
-#include "detail/parallel_for_each.h"
+#include "util/parallel_for_each.h"
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,7 @@
 // computation, never answer it wrongly. Asked one at a time and a whole simplex at once.
 #include "support/exact_reference.h"
 
-#include "detail/power_predicates.h"
+#include "delaunay/power_predicates.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 //
 // The retraction (docs/design.md §5): the engine against the naive rescanning retraction, order
 // independence, X contractible, W = Bd X with its triangles oriented away from X.
-#include "detail/wrap_filtration.h"
+#include "wrap/wrap_filtration.h"
 #include "support/exact_reference.h"
 #include "support/naive_retraction.h"
 #include "support/pipeline.h"

@@ -2,8 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // The join of a two-sided shell's pieces that meet only along an edge (docs/surface.md §4).
-#include "detail/manifold_split.h"
-#include "detail/single_layer.h"
+#include "wrap/manifold_split.h"
+#include "surface/single_layer.h"
 #include "support/topology.h"
 
 #include <gtest/gtest.h>

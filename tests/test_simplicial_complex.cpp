@@ -7,9 +7,9 @@
 // bucketing; in any other order every edge instance is bucketed.)
 #include "support/samplers.h"
 
-#include "detail/input_points.h"
-#include "detail/regular_triangulation.h"
-#include "detail/simplicial_complex.h"
+#include "delaunay/input_points.h"
+#include "delaunay/regular_triangulation.h"
+#include "delaunay/simplicial_complex.h"
 
 #include <gtest/gtest.h>
 

@@ -3,11 +3,11 @@
 //
 // The local split of a solid's surface at its pinched vertices against the whole split of the
 // solid as a subcomplex (splitPinches), on random solids full of pinches.
-#include "detail/boundary.h"
-#include "detail/manifold_split.h"
-#include "detail/regular_triangulation.h"
-#include "detail/solid_labelling.h"
-#include "detail/solid_pinch_split.h"
+#include "wrap/boundary.h"
+#include "wrap/manifold_split.h"
+#include "delaunay/regular_triangulation.h"
+#include "surface/solid_labelling.h"
+#include "surface/solid_pinch_split.h"
 #include "support/samplers.h"
 
 #include <gtest/gtest.h>

@@ -4,12 +4,12 @@
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
 // vertex against the surface's links found by brute force, and the join of parts cut off the
 // solid through X.
-#include "detail/boundary.h"
-#include "detail/manifold_split.h"
-#include "detail/retraction.h"
-#include "detail/solid_labelling.h"
-#include "detail/solid_pinch_split.h"
-#include "detail/solid_repair.h"
+#include "wrap/boundary.h"
+#include "wrap/manifold_split.h"
+#include "wrap/retraction.h"
+#include "surface/solid_labelling.h"
+#include "surface/solid_pinch_split.h"
+#include "surface/solid_repair.h"
 #include "support/pipeline.h"
 #include "support/samplers.h"
 #include "support/topology.h"

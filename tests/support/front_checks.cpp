@@ -2,10 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "front_checks.h"
 
-#include "detail/front_deletion.h"
-#include "detail/removal_log.h"
-#include "detail/retraction.h"
-#include "detail/wrap_filtration.h"
+#include "wrap/front_deletion.h"
+#include "wrap/removal_log.h"
+#include "wrap/retraction.h"
+#include "wrap/wrap_filtration.h"
 
 #include <gtest/gtest.h>
 

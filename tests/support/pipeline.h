@@ -4,9 +4,9 @@
 
 // The engine's first stages (input, triangulation, complex, classification), run one by one, so
 // tests can look at what each built.
-#include "detail/boundary.h"
-#include "detail/retraction.h"
-#include "detail/wrap_engine.h"
+#include "wrap/boundary.h"
+#include "wrap/retraction.h"
+#include "wrap_engine.h"
 
 #include <algorithm>
 #include <memory>

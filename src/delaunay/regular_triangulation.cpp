@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "delaunay/regular_triangulation.h"
+
+#include "delaunay/address_index.h"
+#include "delaunay/cgal_kernel.h"
+#include "util/parallel_for_each.h"
+#include "delaunay/z_order.h"
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Delaunay_triangulation_cell_base_3.h>
+#include <CGAL/Regular_triangulation_3.h>
+#include <CGAL/Spatial_lock_grid_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <tbb/scalable_allocator.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+// Vertex infos are point indices (cells are numbered by their addresses: AddressIndex). Each
+// triangulation comes in two builds: Parallel_tag inserts on all threads, given a lock grid;
+// Sequential_tag has lighter containers, about 10% faster on one thread.
+using LockGrid = CGAL::Spatial_lock_grid_3<CGAL::Tag_priority_blocking>;
+template <class Concurrency>
+constexpr bool IS_PARALLEL = std::is_same_v<Concurrency, CGAL::Parallel_tag>;
+template <class Concurrency>
+using LockGridOf = std::conditional_t<IS_PARALLEL<Concurrency>, LockGrid, CGAL::Default>;
+
+// Hidden points are found from the vertex set afterwards, so cells need not store them.
+using RegularVertex = CGAL::Triangulation_vertex_base_with_info_3<
+    std::uint32_t, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
+using RegularCell =
+    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>;
+template <class Concurrency>
+using Regular = CGAL::Regular_triangulation_3<
+    Kernel, CGAL::Triangulation_data_structure_3<RegularVertex, RegularCell, Concurrency>, LockGridOf<Concurrency>>;
+
+// Equal weights shift every power distance alike: the regular triangulation is the Delaunay
+// triangulation, and CGAL builds that about 15% faster. In dimension 3 both break cospherical
+// ties by the same symbolic perturbation (points in lexicographic order, the largest lifted
+// most), so they give the same tetrahedra; lower dimensions keep to Regular.
+using DelaunayVertex = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
+using DelaunayCell = CGAL::Delaunay_triangulation_cell_base_3<Kernel>;
+template <class Concurrency>
+using Delaunay = CGAL::Delaunay_triangulation_3<
+    Kernel, CGAL::Triangulation_data_structure_3<DelaunayVertex, DelaunayCell, Concurrency>, CGAL::Default,
+    LockGridOf<Concurrency>>;
+
+// Below this many points the threads would mostly wait on each other's locks.
+constexpr std::size_t PARALLEL_INSERTION_MIN_POINTS = 20000;
+// Lock grid cells per axis (CGAL's examples use 50; more cells, fewer conflicts).
+constexpr int LOCK_GRID_CELLS = 50;
+
+/** The even permutation of a tetrahedron's local vertices that puts its smallest vertex id
+  * first and the next smallest second: one canonical, still positively oriented, order. */
+std::array<int, 4>
+canonicalOrder (const std::uint32_t* v)
+{
+  std::array<int, 4> p = {0, 1, 2, 3};
+  const int low = static_cast<int> (std::min_element (v, v + 4) - v);
+  // The even permutations that move `low` to the front: swap it with 0, and two other slots.
+  if (low != 0)
+  {
+    std::swap (p[0], p[low]);
+    const int a = low == 1 ? 2 : 1, b = low == 3 ? 2 : 3;
+    std::swap (p[a], p[b]);
+  }
+  // Rotate the last three (an even permutation) until the smallest of them is second.
+  while (v[p[1]] > v[p[2]] || v[p[1]] > v[p[3]])
+    std::rotate (p.begin () + 1, p.begin () + 2, p.end ());
+  return p;
+}
+
+/** A triangulation's finite tetrahedra as read from CGAL, in CGAL's (thread-timing dependent)
+  * order: each one's vertex ids in canonicalOrder, and across each of them the neighbour's
+  * index in this order, or NO_NEIGHBOUR. */
+struct CgalTetrahedra
+{
+  FilledInParallel<std::uint32_t> vertices, across;
+};
+
+template <class Cgal, class Id>
+CgalTetrahedra
+readTetrahedra (const Cgal& rt, const Id& id)
+{
+  // Cells are numbered first, by their addresses, so that the one pass over them finds their
+  // neighbours' numbers without reading the neighbours.
+  AddressIndex<sizeof (typename Cgal::Cell)> number;
+  HugePageVector<typename Cgal::Cell_handle> cells;
+  cells.reserve (rt.tds ().number_of_cells ());
+  number.reserve (rt.tds ().number_of_cells ());
+  for (auto c = rt.all_cells_begin (); c != rt.all_cells_end (); ++c)
+    if (rt.is_infinite (c))
+      number.add (&*c, NO_NEIGHBOUR);
+    else
+    {
+      number.add (&*c, static_cast<std::uint32_t> (cells.size ()));
+      cells.push_back (c);
+    }
+  number.seal ();
+  CgalTetrahedra read;
+  read.vertices.resize (4 * cells.size ());
+  read.across.resize (4 * cells.size ());
+  parallelForEach (cells.size (), [&] (std::size_t j) {
+    std::uint32_t v[4];
+    for (int i = 0; i < 4; ++i)
+      v[i] = id (cells[j]->vertex (i));
+    const std::array<int, 4> p = canonicalOrder (v);
+    for (int i = 0; i < 4; ++i)
+    {
+      read.vertices[4 * j + i] = v[p[i]];
+      read.across[4 * j + i] = number[&*cells[j]->neighbor (p[i])];
+    }
+  });
+  return read;
+}
+
+/** The tetrahedra \a read into \a t, in an order that depends only on the vertex ids: sorted by
+  * their vertex sets. A parallel insertion leaves CGAL's cells in an order that depends on thread
+  * timing; this keeps every later stage, and so every result, the same on any number of threads.
+  * Ordering by lowest vertex along the curve of vertex ids also keeps the tetrahedra of a
+  * neighbourhood together. */
+void
+orderTetrahedra (const CgalTetrahedra& read, Triangulation& t)
+{
+  const std::size_t n = read.vertices.size () / 4;
+  // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
+  // The key travels with the tetrahedron, so that sorting a bucket reads nothing else.
+  struct Keyed
+  {
+    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
+    std::uint32_t tetrahedron;
+    bool operator< (const Keyed& o) const { return key < o.key; }
+  };
+  std::vector<std::size_t> begin;
+  auto keyed = bucketInParallel<Keyed> (
+      n, t.point_of_vertex.size (),
+      [&] (std::size_t j, auto put) {
+        const std::uint32_t* v = &read.vertices[4 * j];
+        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
+      },
+      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
+  FilledInParallel<std::uint32_t> order (n), rank (n);
+  parallelForEach (n, [&] (std::size_t r) {
+    order[r] = keyed[r].tetrahedron;
+    rank[order[r]] = static_cast<std::uint32_t> (r);
+  });
+  keyed = {};
+
+  t.top_simplices.resize (4 * n);
+  t.neighbours.resize (4 * n);
+  parallelForEach (n, [&] (std::size_t r) {
+    const std::size_t j = order[r];
+    for (int i = 0; i < 4; ++i)
+    {
+      t.top_simplices[4 * r + i] = read.vertices[4 * j + i];
+      const std::uint32_t u = read.across[4 * j + i];
+      t.neighbours[4 * r + i] = u == NO_NEIGHBOUR ? NO_NEIGHBOUR : rank[u];
+    }
+  });
+}
+
+/** Whether the \a n distinct points \a point (i) span space, decided by exact orientation tests. */
+template <class Point>
+bool
+spanSpace (std::size_t n, const Point& point)
+{
+  std::size_t i = 2;
+  while (i < n && CGAL::collinear (point (0), point (1), point (i)))
+    ++i;
+  const std::size_t third = i;
+  for (++i; i < n; ++i)
+    if (CGAL::orientation (point (0), point (1), point (third), point (i)) != CGAL::COPLANAR)
+      return true;
+  return false;
+}
+
+/** The triangulation of the points by CGAL's \a Cgal, whose sites \a site makes from point
+  * indices. */
+template <class Cgal, class Site>
+Triangulation
+triangulateWith (const std::vector<Point3>& positions, const Site& site)
+{
+  std::vector<std::pair<typename Cgal::Point, std::uint32_t>> input;
+  input.reserve (positions.size ());
+  CGAL::Bbox_3 box;
+  for (std::uint32_t i = 0; i < positions.size (); ++i)
+  {
+    input.emplace_back (site (i), i);
+    box += input.back ().first.bbox ();
+  }
+  Cgal rt;
+  std::optional<LockGrid> locks;
+  if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
+  {
+    locks.emplace (box, LOCK_GRID_CELLS);
+    rt.set_lock_data_structure (&*locks);
+  }
+  rt.insert (input.begin (), input.end ()); // spatially sorted insertion
+  input = {};
+  rt.set_lock_data_structure (nullptr);
+
+  Triangulation t;
+  t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
+
+  // Vertex ids along a space-filling curve: neighbours in space are neighbours in every array
+  // indexed by vertex (and so by edge and triangle), which keeps the later stages in cache.
+  // The numbering depends only on the points, never on CGAL's internals.
+  const std::vector<std::uint32_t> curve = zOrder (positions);
+
+  constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
+  std::vector<std::uint32_t> vertex_of_point (positions.size (), ABSENT);
+  for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
+    vertex_of_point[v->info ()] = 0;
+  for (std::uint32_t i : curve)
+    if (vertex_of_point[i] != ABSENT)
+    {
+      vertex_of_point[i] = static_cast<std::uint32_t> (t.point_of_vertex.size ());
+      t.point_of_vertex.push_back (i);
+    }
+  for (std::uint32_t i = 0; i < positions.size (); ++i)
+    if (vertex_of_point[i] == ABSENT)
+      t.hidden.push_back (i);
+  // From here on a vertex's info is its id (one indirection less per lookup).
+  for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
+    v->info () = vertex_of_point[v->info ()];
+  const auto id = [] (typename Cgal::Vertex_handle v) { return v->info (); };
+
+  // CGAL's triangulation is let go as soon as it has been read: ordering the tetrahedra takes
+  // a few hundred megabytes more at a million points. Its parallel build allocates through TBB's
+  // allocator, which keeps freed memory for reuse; that is given back too. (Only then: asked
+  // before it ever allocated, the allocator crashes.)
+  const auto release = [&rt] {
+    rt.clear ();
+    if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
+      scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+  };
+  auto& top = t.top_simplices;
+  switch (t.dimension)
+  {
+  case 3:
+  {
+    const CgalTetrahedra read = readTetrahedra (rt, id);
+    release ();
+    orderTetrahedra (read, t);
+    return t;
+  }
+  case 2:
+    for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
+      for (int i = 0; i < 3; ++i)
+        top.push_back (id (f->first->vertex (i)));
+    break;
+  case 1:
+    for (auto e = rt.finite_edges_begin (); e != rt.finite_edges_end (); ++e)
+    {
+      top.push_back (id (e->first->vertex (e->second)));
+      top.push_back (id (e->first->vertex (e->third)));
+    }
+    break;
+  case 0:
+    top.push_back (0);
+    break;
+  default:
+    break;
+  }
+  release ();
+  return t;
+}
+
+} // namespace
+
+Triangulation
+triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights)
+{
+  const auto point = [&] (std::uint32_t i) {
+    return BarePoint (positions[i][0], positions[i][1], positions[i][2]);
+  };
+  const auto weighted = [&] (std::uint32_t i) { return WeightedPoint (point (i), weights[i]); };
+  const bool equal_weights = std::all_of (weights.begin (), weights.end (), [&] (double w) { return w == weights[0]; });
+  const bool delaunay = equal_weights && spanSpace (positions.size (), point);
+  const bool parallel = positions.size () >= PARALLEL_INSERTION_MIN_POINTS &&
+                        tbb::this_task_arena::max_concurrency () > 1;
+  Triangulation t = delaunay ? parallel ? triangulateWith<Delaunay<CGAL::Parallel_tag>> (positions, point)
+                                        : triangulateWith<Delaunay<CGAL::Sequential_tag>> (positions, point)
+                  : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted)
+                             : triangulateWith<Regular<CGAL::Sequential_tag>> (positions, weighted);
+  return t;
+}
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "wrap/boundary.h"
+#include "wrap/classification.h"
+#include "wrap/subcomplex.h"
+#include "delaunay/simplicial_complex.h"
+
+#include <pcl_wrap/wrap_result.h>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief The one map from the engine's vertex ids to the caller's point indices. Vertex v is
+  * input point (*this)(v); copies that the pinch split makes are appended as new vertices and
+  * numbered after the input points. Every index that leaves the engine goes through it. */
+class InputIndices
+{
+public:
+  InputIndices () = default;
+  explicit InputIndices (std::vector<PointIndex> of_vertex) : of_vertex_ (std::move (of_vertex)) {}
+
+  PointIndex operator() (std::uint32_t vertex) const { return of_vertex_[vertex]; }
+  std::size_t size () const { return of_vertex_.size (); }
+
+  /** \brief Vertex size() + k becomes a copy of vertex copy_of[k], numbered input_points + k.
+    * Returns the input point each copy copies (WrapResult::copies). */
+  std::vector<PointIndex> appendCopies (const std::vector<std::uint32_t>& copy_of, std::size_t input_points);
+
+  /** \brief \a w in point indices. */
+  WrapSurface surface (const Boundary& w) const;
+
+  /** \brief The complex in point indices, with each simplex's class and membership in \a x. */
+  std::array<SimplexList, 4> complex (const SimplicialComplex& complex, const Classification& classification,
+                                      const Subcomplex& x) const;
+
+  /** \brief The same map with every point index i read as \a index (i). */
+  InputIndices reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const;
+
+private:
+  std::vector<PointIndex> of_vertex_;
+};
+
+} // namespace pcl_wrap::detail

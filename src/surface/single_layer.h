@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "wrap/boundary.h"
+#include "util/filled_in_parallel.h"
+#include "wrap/manifold_split.h"
+#include "delaunay/simplicial_complex.h"
+#include "wrap/subcomplex.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Is the sample a single layer, with no volume behind it (a terrain, a scan seen from one
+  * side)? Then Wrap's flow has collapsed the space under the points, and most of the tetrahedra
+  * that the labelling put inside, which close the layer with its convex hull, are not in X.
+  * On a closed object X holds most of them, as a rule nearly all (it is larger than the solid:
+  * it webs across concavities). */
+bool
+isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& inside);
+
+/** \brief The number of distinct vertices of \a triangles. */
+std::size_t
+verticesOn (const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+/** \brief The surface of a single-layer sample: X's boundary split into a closed two-sided shell. */
+struct TwoSidedShell
+{
+  Boundary w;           ///< the boundary of X and the bridges
+  ManifoldSplit split;  ///< w split where it touches itself, sheets once per side
+  std::size_t bridges = 0; ///< Delaunay simplices added to tie pieces to the rest
+};
+
+/** \brief X's boundary, split into a closed 2-manifold (a sheet once per side, points copied per
+  * side), with fewer pieces than the split alone gives. The split separates pieces of X that
+  * meet at a single vertex, or that it cannot keep joined along an edge (a triangle hanging from
+  * the rim of a scan), which come out as closed pieces of their own. In rounds, each is tied to
+  * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
+  * edge, or the triangles around the vertex, whose largest is as small as can be), none longer
+  * than the triangles they join nor meeting the shell along another edge; a round is kept only
+  * if it leaves fewer pieces and no new handle. The ties are faces of the triangulation. Pieces left meeting only along an edge are
+  * joined there by taking the other diagonal of the quadrilaterals around it: the only triangles
+  * of the shell that are not Delaunay faces.
+  * \param[in] positions per vertex of \a complex
+  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet, as for SolidLabelling */
+TwoSidedShell
+twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& positions,
+               const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x);
+
+/** \brief Joins pieces of \a split (a closed two-sided shell over \a nv vertices) that meet only
+  * along an edge (a, b), two triangles each: taken in a cycle, piece i's triangle (a, b, u) and
+  * the next piece's (b, a, w) take the other diagonal, (a, w, u) and (w, b, u), and the pieces'
+  * copies of a and b become one. Every edge stays in two triangles, once each way, and k spheres
+  * make one. Returns how many pieces it joined to others. */
+std::size_t
+joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv);
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "util/filled_in_parallel.h"
+#include "wrap/subcomplex.h"
+#include "delaunay/simplicial_complex.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Which Delaunay tetrahedra are inside the solid: SolidLabelling::labels(). */
+struct SolidLabels
+{
+  std::vector<std::uint8_t> inside; ///< per tetrahedron: 1 inside, 0 outside
+  std::vector<float> margin;        ///< per tetrahedron: how much the winning vote beat the other
+  bool hull = false;                ///< no vote enclosed anything: every tetrahedron is inside
+};
+
+/** \brief Labels the Delaunay tetrahedra inside or outside the sampled solid.
+  *
+  * Every tetrahedron has an empty sphere (its orthosphere). Where two tetrahedra share a triangle
+  * their spheres meet at an angle: spheres on one side of a sampled surface overlap deeply (they
+  * fill the same part of space), spheres on opposite sides barely touch (the surface passes
+  * between them). The cosine of that angle is a scale-free, parameter-free vote: same side when
+  * positive, opposite sides when negative, the stronger the closer to +-1. The outside (beyond the
+  * convex hull) is a half-space sphere. Starting from it, tetrahedra are labelled in order of the
+  * strongest undecided vote (a priority flood, as in Amenta, Choi and Kolluri's power crust), so
+  * that weak, ambiguous votes are cast last, by which time their neighbourhood is decided.
+  *
+  * Three steps, so that the flood, which is sequential, can run while other threads compute X:
+  * the constructor computes the votes on all threads; flood() reads nothing but the votes; the
+  * ties it meets (votes of exactly equal strength for both sides) wait for labels(), where Wrap's
+  * X breaks them: a tetrahedron of X is inside. When no tetrahedron at all comes out inside, the
+  * solid is the convex hull (SolidLabels::hull). */
+class SolidLabelling
+{
+public:
+  /** \param[in] tetrahedra four vertex ids per tetrahedron
+    * \param[in] neighbours per tetrahedron, the tetrahedron across each facet (opposite the
+    *            vertex of the same slot) or NO_NEIGHBOUR on the hull; read until labels() */
+  SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const FilledInParallel<std::uint32_t>& neighbours,
+                  const std::vector<Point3>& positions, const std::vector<double>& weights);
+
+  /** \brief The priority flood from the outside, on the calling thread. */
+  void flood ();
+
+  /** \brief The ties broken by \a x, the flood finished, and the labels. Call once, after flood(). */
+  SolidLabels labels (const Subcomplex& x);
+
+private:
+  /** Per tetrahedron, what the flood reads and writes besides its neighbours, in a quarter of a
+    * cache line: the flood visits tetrahedra in priority order, all over the mesh. Votes and
+    * evidence are fixed point, finer than the flood's buckets. */
+  struct alignas (16) Record
+  {
+    std::int16_t vote[4];    ///< the vote cast across each facet
+    std::uint16_t in, out;   ///< the strongest vote received so far for each side
+    std::uint8_t label;
+  };
+  static_assert (sizeof (Record) == 16);
+  static constexpr int BUCKETS = 4096; ///< of the margin between the votes for the two sides
+
+  void cast (std::uint32_t t, std::uint8_t side, int vote);
+  void castFrom (std::uint32_t t);
+  void run (const Subcomplex* x); ///< without X, ties are set aside
+  SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
+
+  const FilledInParallel<std::uint32_t>& neighbours_;
+  FilledInParallel<Record> tets_;
+  std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
+  int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
+  std::vector<std::uint32_t> tied_;
+  std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, the records freed
+};
+
+/** \brief The tetrahedra flagged in \a inside and all their faces, per dimension: the subcomplex
+  * whose boundary is the surface. */
+std::array<std::vector<std::uint8_t>, 4>
+solidSubcomplex (const SimplicialComplex& complex, const std::vector<std::uint8_t>& inside);
+
+/** \brief The cosine of the angle at which the spheres (centre, squared radius) \a a and \a b
+  * meet, given their centres' signed heights \a ha, \a hb above a common plane through which both
+  * pass in the same circle of squared radius \a rho2: (rho2 + ha hb) / (|a| |b|). +1: the same
+  * sphere; -1: tangent from opposite sides. */
+double
+sphereAngleCosine (double rho2, double ha, double hb);
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "util/filled_in_parallel.h"
+#include "delaunay/simplicial_complex.h"
+#include "surface/solid_labelling.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief What repairSolid() changed. */
+struct SolidRepair
+{
+  std::size_t flipped = 0;          ///< tetrahedra moved to the other side
+  std::vector<std::uint32_t> pinched; ///< vertices where the surface still touches itself, ascending
+};
+
+/** \brief Moves tetrahedra across the surface of the solid in \a labels, weakest votes first,
+  * until the surface is a 2-manifold through every vertex it can reach:
+  * - at an edge with more than two surface triangles (the solid touches itself along it), the
+  *   weakest run of tetrahedra around the edge changes side, which joins the runs beside it;
+  * - at a vertex whose triangles make more than one fan, the weakest connected part of its star
+  *   changes side;
+  * - a vertex buried inside the solid (or floating outside it) gets its weakest tetrahedron that
+  *   touches the surface moved out (or in), which puts it on the surface.
+  * - parts of the solid cut off from the rest are joined to it along X (see docs/surface.md).
+  * Each tetrahedron changes side at most once, so the repair ends; a pinch it cannot mend is left
+  * to the pinch split (splitSolidPinches()).
+  * \param[in] neighbours as for SolidLabelling */
+SolidRepair
+repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x,
+             SolidLabels& labels);
+
+} // namespace pcl_wrap::detail
