@@ -3,13 +3,10 @@
 #include "wrap_engine.h"
 
 #include "filtration_data.h"
-#include "wrap/manifold_split.h"
 #include "util/parallel_for_each.h"
+#include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
 #include "wrap/sink_deletion.h"
-#include "surface/solid_pinch_split.h"
-#include "surface/single_layer.h"
-#include "surface/solid_repair.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -25,25 +22,12 @@ WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<dou
     clock_ (result_.statistics, observer_)
 {}
 
-WrapEngine::~WrapEngine ()
-{
-  if (!labelling_)
-    return;
-  try
-  {
-    flooding_.wait (); // a stage threw while the flood ran; its own exception, if any, is dropped
-  }
-  catch (...)
-  {
-  }
-}
-
 WrapResult
 WrapEngine::run ()
 {
   selectInput ();
   triangulate ();
-  startSolidLabelling ();
+  startDefaultSurface ();
   buildComplex ();
   classify ();
   collapse ();
@@ -55,7 +39,7 @@ WrapEngine::run ()
 }
 
 bool
-WrapEngine::cleanSurface () const
+WrapEngine::defaultSurface () const
 {
   return parameters_.output == Output::surface && dimension_ == 3;
 }
@@ -105,27 +89,28 @@ WrapEngine::triangulate ()
 }
 
 void
-WrapEngine::startSolidLabelling ()
+WrapEngine::startDefaultSurface ()
 {
-  if (!cleanSurface ())
+  if (!defaultSurface ())
     return;
-  // The votes on all threads now; the flood on one thread while the others build the complex
-  // and compute X, which it needs only to break exact ties (SolidLabelling::labels()).
-  neighbours_ = std::move (triangulation_.neighbours); // the labelling and the repair read them
-  labelling_.emplace (triangulation_.top_simplices, neighbours_, vertex_positions_, vertex_weights_);
+  tetrahedra_ = Tetrahedra (std::move (triangulation_.neighbours));
+  surface_ = std::make_unique<DefaultSurface> (triangulation_.top_simplices, tetrahedra_, vertex_positions_,
+                                               vertex_weights_);
   clock_.stageDone ("votes");
-  flooding_.run ([this] { labelling_->flood (); });
 }
 
 void
 WrapEngine::buildComplex ()
 {
-  if (cleanSurface () && !labelling_) // the labelling took them over already when it started
-    neighbours_ = std::move (triangulation_.neighbours);
-  const FilledInParallel<std::uint32_t>& neighbours = cleanSurface () ? neighbours_ : triangulation_.neighbours;
+  if (defaultSurface () && !surface_) // the tests build the complex without the surface stage
+    tetrahedra_ = Tetrahedra (std::move (triangulation_.neighbours));
+  const FilledInParallel<std::uint32_t>& neighbours =
+      defaultSurface () ? tetrahedra_.neighbourArray () : triangulation_.neighbours;
   SimplicialComplex built (dimension_, static_cast<std::uint32_t> (input_indices_.size ()),
                            std::move (triangulation_.top_simplices), neighbours);
   complex_ = std::make_shared<SimplicialComplex> (std::move (built));
+  if (defaultSurface ())
+    tetrahedra_.attach (*complex_);
   triangulation_ = {};
   clock_.stageDone ("complex");
 }
@@ -186,48 +171,16 @@ WrapEngine::deleteSinks ()
 void
 WrapEngine::extractSurface ()
 {
-  const SimplicialComplex& complex = *complex_;
-  if (!cleanSurface ())
+  if (!defaultSurface ())
   {
-    w_ = extractBoundary (complex, *x_);
+    w_ = extractBoundary (*complex_, *x_);
     return; // timed with the report, as the boundary stage
   }
-  // The boundary of a labelled solid of Delaunay tetrahedra, repaired to a manifold; where the
-  // repair leaves the surface touching itself, the pinch split of the raw output separates it.
-  flooding_.wait ();
-  SolidLabels labels = labelling_->labels (*x_);
-  labelling_.reset ();
-  clock_.stageDone ("labelling");
-  const bool single_layer = !labels.hull && isSingleLayer (complex, *x_, labels.inside);
-  const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (complex, neighbours_, *x_, labels);
-  result_.statistics.tetrahedra_moved = repair.flipped;
-  clock_.stageDone ("repair");
-  w_ = extractSolidBoundary (complex, neighbours_, labels.inside);
-  if (!repair.pinched.empty ())
-  {
-    split_ = splitSolidPinches (complex, neighbours_, labels.inside, w_, repair.pinched);
-    if (!split_) // an edge needs more than the two simple pairings: the whole split tries the rest
-    {
-      pinched_solid_ = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
-      w_ = extractBoundary (complex, *pinched_solid_);
-    }
-  }
-  const std::size_t on_solid = single_layer ? verticesOn (w_.triangles) : 0;
-  if (single_layer && on_solid < complex.numVertices ())
-  {
-    // The labelled solid is not Wrap's and leaves points off its surface: the points are one
-    // layer, and X is that layer.
-    TwoSidedShell shell = twoSidedShell (complex, vertex_positions_, neighbours_, *x_);
-    if (verticesOn (shell.w.triangles) > on_solid)
-    {
-      w_ = std::move (shell.w);
-      split_ = std::move (shell.split);
-      pinched_solid_.reset ();
-      result_.statistics.single_layer = true;
-      result_.statistics.bridge_simplices = shell.bridges;
-    }
-  }
-  neighbours_ = {};
+  DefaultSurface::Output out = surface_->surface (*x_, vertex_positions_, result_.statistics, clock_);
+  surface_.reset ();
+  tetrahedra_ = {};
+  w_ = std::move (out.w);
+  split_ = std::move (out.split);
 }
 
 void
@@ -235,8 +188,8 @@ WrapEngine::report ()
 {
   const SimplicialComplex& complex = *complex_;
   WrapStatistics& stats = result_.statistics;
-  if (pinched_solid_ || (parameters_.manifold && !cleanSurface ())) // a mended solid needs no split
-    split_ = splitPinches (complex, pinched_solid_ ? *pinched_solid_ : *x_, w_);
+  if (parameters_.manifold && !defaultSurface ())
+    split_ = splitPinches (complex, *x_, w_);
   if (split_)
   {
     ManifoldSplit& split = *split_;
@@ -291,23 +244,13 @@ WrapEngine::checkX () const
     }
 }
 
-/** The clean surface, once split, is closed and oriented: each directed edge once, with its
+/** The default surface, once split, is closed and oriented: each directed edge once, with its
   * reverse (docs/surface.md). The raw W needs nothing: it is Bd X by construction. */
 void
 WrapEngine::checkSurface () const
 {
-  if (!cleanSurface () || w_.triangles.empty ())
-    return;
-  std::vector<std::array<std::uint32_t, 2>> edges;
-  for (const auto& t : w_.triangles)
-    for (int i = 0; i < 3; ++i)
-      edges.push_back ({t[i], t[(i + 1) % 3]});
-  std::sort (edges.begin (), edges.end ());
-  if (std::adjacent_find (edges.begin (), edges.end ()) != edges.end ())
-    throw std::logic_error ("invariant: the surface has an edge twice the same way");
-  for (const auto& e : edges)
-    if (!std::binary_search (edges.begin (), edges.end (), std::array<std::uint32_t, 2>{e[1], e[0]}))
-      throw std::logic_error ("invariant: the surface has an edge with one triangle");
+  if (defaultSurface () && !nonManifoldEdges (w_.triangles).empty ())
+    throw std::logic_error ("invariant: the surface is not closed and oriented");
 }
 
 } // namespace pcl_wrap::detail

@@ -2,23 +2,21 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include "wrap/boundary.h"
-#include "wrap/classification.h"
-#include "util/filled_in_parallel.h"
 #include "delaunay/input_points.h"
-#include "input_indices.h"
-#include "wrap/manifold_split.h"
 #include "delaunay/power_predicates.h"
 #include "delaunay/regular_triangulation.h"
-#include "wrap/subcomplex.h"
 #include "delaunay/simplicial_complex.h"
-#include "surface/solid_labelling.h"
+#include "delaunay/tetrahedra.h"
+#include "input_indices.h"
+#include "surface/default_surface.h"
 #include "util/stage_clock.h"
+#include "wrap/boundary.h"
+#include "wrap/classification.h"
+#include "wrap/manifold_split.h"
+#include "wrap/subcomplex.h"
 #include "wrap/wrap_filtration.h"
 
 #include <pcl_wrap/compute_wrap.h>
-
-#include <tbb/task_group.h>
 
 #include <memory>
 #include <optional>
@@ -30,7 +28,7 @@ namespace pcl_wrap::detail
 /** \brief The Wrap construction as named stages over one state. run() calls them in the order of
   * the pipeline; the tests call the first ones alone to look at what they build.
   *
-  *   selectInput -> triangulate -> startSolidLabelling -> buildComplex -> classify -> collapse
+  *   selectInput -> triangulate -> startDefaultSurface -> buildComplex -> classify -> collapse
   *   -> computeFiltration -> deleteSinks -> extractSurface -> report
   *
   * The stages in between that a parameter does not ask for do nothing. Each stage ends by timing
@@ -43,8 +41,6 @@ public:
               const StageObserver& observer = StageObserver ());
   WrapEngine (const WrapEngine&) = delete;
   WrapEngine& operator= (const WrapEngine&) = delete;
-  /** \brief Waits for a flood still running (a stage threw). */
-  ~WrapEngine ();
 
   /** \brief Every stage in order; the result. */
   WrapResult run ();
@@ -54,8 +50,8 @@ public:
   void selectInput ();
   /** \brief The regular (weighted Delaunay) triangulation; hidden points are reported. */
   void triangulate ();
-  /** \brief The clean surface's votes, then its flood as a task beside the next stages. */
-  void startSolidLabelling ();
+  /** \brief The default surface's votes, then its flood as a task beside the next stages. */
+  void startDefaultSurface ();
   /** \brief Del S as a simplicial complex with faces, cofaces and coface counts. */
   void buildComplex ();
   /** \brief Each simplex's class and its flow (§5). */
@@ -66,7 +62,7 @@ public:
   void computeFiltration ();
   /** \brief The deletion of the sinks above the threshold, when there is one (§8). */
   void deleteSinks ();
-  /** \brief W = Bd X, or the clean surface (docs/surface.md), in vertex ids. */
+  /** \brief W = Bd X, or the default surface (docs/surface.md), in vertex ids. */
   void extractSurface ();
   /** \brief The result in point indices, the statistics and, when asked, the complex. */
   void report ();
@@ -76,16 +72,16 @@ public:
   const Classification& classification () const { return *classification_; }
   const PowerPredicates& predicates () const { return *predicates_; }
   const Subcomplex& x () const { return *x_; }
-  /** \brief Per tetrahedron, the tetrahedron across each facet (the clean surface's walk), from
-    * buildComplex() until the surface is extracted. */
-  const FilledInParallel<std::uint32_t>& neighbours () const { return neighbours_; }
+  /** \brief How the tetrahedra meet, for the default surface: from buildComplex() until the
+    * surface is extracted. */
+  const Tetrahedra& tetrahedra () const { return tetrahedra_; }
   /** \brief Per vertex id: its position and weight. */
   const std::vector<Point3>& vertexPositions () const { return vertex_positions_; }
   const std::vector<double>& vertexWeights () const { return vertex_weights_; }
   const InputIndices& inputIndices () const { return input_indices_; }
 
 private:
-  bool cleanSurface () const;
+  bool defaultSurface () const;
   void checkX () const;
   void checkSurface () const;
 
@@ -102,17 +98,15 @@ private:
   std::vector<Point3> vertex_positions_;
   std::vector<double> vertex_weights_;
   InputIndices input_indices_;
-  std::optional<SolidLabelling> labelling_; // engaged while its flood may run
-  tbb::task_group flooding_;
+  Tetrahedra tetrahedra_;                  // the default surface's walk
+  std::unique_ptr<DefaultSurface> surface_; // after tetrahedra_: its flood reads them
   std::shared_ptr<SimplicialComplex> complex_; // shared with the filtration
-  FilledInParallel<std::uint32_t> neighbours_; // the surface stage's walk
   std::unique_ptr<PowerPredicates> predicates_;
   std::shared_ptr<const Classification> classification_;
   std::unique_ptr<Subcomplex> x_;
   std::shared_ptr<const WrapFiltration> filtration_;
   Boundary w_;
-  std::unique_ptr<Subcomplex> pinched_solid_; // the repaired solid, when its pinches need the whole split
-  std::optional<ManifoldSplit> split_;        // W where it touched itself, split
+  std::optional<ManifoldSplit> split_; // the surface where it touched itself, split
 };
 
 } // namespace pcl_wrap::detail

@@ -3,7 +3,7 @@
 //
 // The join of a two-sided shell's pieces that meet only along an edge (docs/surface.md §4).
 #include "wrap/manifold_split.h"
-#include "surface/single_layer.h"
+#include "surface/shell_joins.h"
 #include "support/topology.h"
 
 #include <gtest/gtest.h>

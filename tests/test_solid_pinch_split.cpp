@@ -65,9 +65,10 @@ TEST (SolidPinchSplit, EqualsTheWholeSplitOnRandomSolids)
     SCOPED_TRACE (seed);
     const std::vector<Point3> points = cubeSample (300, seed);
     detail::Triangulation dt = detail::triangulate (points, std::vector<double> (points.size (), 0.0));
-    const detail::FilledInParallel<std::uint32_t> neighbours = dt.neighbours;
     const detail::SimplicialComplex complex (3, static_cast<std::uint32_t> (dt.point_of_vertex.size ()),
                                              std::move (dt.top_simplices), dt.neighbours);
+    detail::Tetrahedra tetrahedra (std::move (dt.neighbours));
+    tetrahedra.attach (complex);
     // A ball with a random tenth of the tetrahedra flipped: pinched all over.
     std::mt19937 random (seed);
     std::vector<std::uint8_t> inside (complex.size (3));
@@ -83,11 +84,11 @@ TEST (SolidPinchSplit, EqualsTheWholeSplitOnRandomSolids)
       }
       inside[t] = (r2 < 0.36) != (random () % 10 == 0);
     }
-    const detail::Boundary w = detail::extractSolidBoundary (complex, neighbours, inside);
+    const detail::Boundary w = detail::extractSolidBoundary (tetrahedra, inside);
     // Every vertex is passed as possibly pinched: those with one fan must stay as they are.
     std::vector<std::uint32_t> all (complex.numVertices ());
     std::iota (all.begin (), all.end (), 0u);
-    const std::optional<detail::ManifoldSplit> local = detail::splitSolidPinches (complex, neighbours, inside, w, all);
+    const std::optional<detail::ManifoldSplit> local = detail::splitSolidPinches (tetrahedra, inside, w, all);
 
     const detail::Subcomplex solid (complex, detail::solidSubcomplex (complex, inside));
     const detail::Boundary whole_w = detail::extractBoundary (complex, solid);

@@ -79,13 +79,14 @@ solidParts (const detail::SimplicialComplex& complex, const std::vector<std::uin
 
 /** The surface of a repaired solid as the engine writes it: split where the repair left pinches. */
 std::vector<Triangle>
-repairedSurface (const detail::SimplicialComplex& complex, const detail::FilledInParallel<std::uint32_t>& neighbours,
-                 const std::vector<std::uint8_t>& inside, const std::vector<std::uint32_t>& pinched)
+repairedSurface (const detail::Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside,
+                 const std::vector<std::uint32_t>& pinched)
 {
-  const detail::Boundary w = detail::extractSolidBoundary (complex, neighbours, inside);
+  const detail::SimplicialComplex& complex = tetrahedra.complex ();
+  const detail::Boundary w = detail::extractSolidBoundary (tetrahedra, inside);
   std::optional<detail::ManifoldSplit> split;
   if (!pinched.empty ())
-    split = detail::splitSolidPinches (complex, neighbours, inside, w, pinched);
+    split = detail::splitSolidPinches (tetrahedra, inside, w, pinched);
   if (!pinched.empty () && !split)
   {
     const detail::Subcomplex solid (complex, detail::solidSubcomplex (complex, inside));
@@ -126,7 +127,7 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
     for (const auto& link : surfaceLinks (p.complex, given))
       before += !link.empty () && !isOneCycle (link);
 
-    const detail::SolidRepair repair = detail::repairSolid (p.complex, p.neighbours, x, labels);
+    const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, labels);
 
     EXPECT_TRUE (std::is_sorted (repair.pinched.begin (), repair.pinched.end ()));
     EXPECT_TRUE (std::adjacent_find (repair.pinched.begin (), repair.pinched.end ()) == repair.pinched.end ());
@@ -149,7 +150,7 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
     EXPECT_LE (changed, repair.flipped);
     moved += repair.flipped;
 
-    const SurfaceReport surface = describeSurface (repairedSurface (p.complex, p.neighbours, labels.inside, repair.pinched));
+    const SurfaceReport surface = describeSurface (repairedSurface (p.tetrahedra, labels.inside, repair.pinched));
     EXPECT_TRUE (surface.closed_manifold);
     EXPECT_TRUE (surface.consistently_oriented);
   }
@@ -182,10 +183,10 @@ TEST (SolidRepair, JoinsAPartCutOffTheSolidThroughX)
   ASSERT_GT (cut, 100u);
   ASSERT_GE (solidParts (p.complex, labels.inside), 2u);
 
-  const detail::SolidRepair repair = detail::repairSolid (p.complex, p.neighbours, x, labels);
+  const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, labels);
 
   EXPECT_EQ (solidParts (p.complex, labels.inside), 1u);
-  const SurfaceReport surface = describeSurface (repairedSurface (p.complex, p.neighbours, labels.inside, repair.pinched));
+  const SurfaceReport surface = describeSurface (repairedSurface (p.tetrahedra, labels.inside, repair.pinched));
   EXPECT_TRUE (surface.closed_manifold);
   EXPECT_EQ (surface.components, 1u);
   EXPECT_EQ (surface.euler, 2) << "a sphere";

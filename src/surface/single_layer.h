@@ -2,10 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include "wrap/boundary.h"
-#include "util/filled_in_parallel.h"
-#include "wrap/manifold_split.h"
 #include "delaunay/simplicial_complex.h"
+#include "delaunay/tetrahedra.h"
+#include "wrap/boundary.h"
+#include "wrap/manifold_split.h"
 #include "wrap/subcomplex.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -48,18 +48,9 @@ struct TwoSidedShell
   * if it leaves fewer pieces and no new handle. The ties are faces of the triangulation. Pieces left meeting only along an edge are
   * joined there by taking the other diagonal of the quadrilaterals around it: the only triangles
   * of the shell that are not Delaunay faces.
-  * \param[in] positions per vertex of \a complex
-  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet, as for SolidLabelling */
+  * \param[in] tetrahedra attached to their complex
+  * \param[in] positions per vertex */
 TwoSidedShell
-twoSidedShell (const SimplicialComplex& complex, const std::vector<Point3>& positions,
-               const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x);
-
-/** \brief Joins pieces of \a split (a closed two-sided shell over \a nv vertices) that meet only
-  * along an edge (a, b), two triangles each: taken in a cycle, piece i's triangle (a, b, u) and
-  * the next piece's (b, a, w) take the other diagonal, (a, w, u) and (w, b, u), and the pieces'
-  * copies of a and b become one. Every edge stays in two triangles, once each way, and k spheres
-  * make one. Returns how many pieces it joined to others. */
-std::size_t
-joinAlongSharedEdges (ManifoldSplit& split, std::uint32_t nv);
+twoSidedShell (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const Subcomplex& x);
 
 } // namespace pcl_wrap::detail

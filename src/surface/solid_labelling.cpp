@@ -3,7 +3,6 @@
 #include "surface/solid_labelling.h"
 
 #include "util/parallel_for_each.h"
-#include "delaunay/regular_triangulation.h"
 
 #include <algorithm>
 #include <array>
@@ -93,10 +92,9 @@ sphereAngleCosine (double rho2, double ha, double hb)
   return std::isfinite (c) ? std::clamp (c, -1.0, 1.0) : 0.0;
 }
 
-SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra,
-                                const FilledInParallel<std::uint32_t>& neighbours,
+SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
-  : neighbours_ (neighbours), tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
+  : adjacency_ (adjacency), tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
 {
   const std::size_t n = tets_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
@@ -119,8 +117,8 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     const Vec to_t = minus (spheres[t].centre, a);
     const double ht = dot (to_t, normal);
     const double wa = weights[v[(i + 1) & 3]];
-    const std::uint32_t u = neighbours[4 * t + i];
-    if (u == NO_NEIGHBOUR) // the outside: a half-space, its centre infinitely far below the facet
+    const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
+    if (u == OUTSIDE_HULL) // the outside: a half-space, its centre infinitely far below the facet
     {
       const double rho2 = dot (to_t, to_t) - ht * ht - wa;
       const double r = std::sqrt (rho2 + ht * ht);
@@ -143,19 +141,17 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     r.label = UNKNOWN;
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t u = neighbours[4 * t + i];
-      if (u == NO_NEIGHBOUR || u > t)
+      const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
+      if (u == OUTSIDE_HULL || u > t)
         r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
     }
   });
   parallelForEach (n, [&] (std::size_t t) {
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t u = neighbours[4 * t + i];
-      if (u != NO_NEIGHBOUR && u < t)
-        for (int j = 0; j < 4; ++j)
-          if (neighbours[4 * std::size_t (u) + j] == t)
-            tets_[t].vote[i] = tets_[u].vote[j];
+      const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
+      if (u != OUTSIDE_HULL && u < t)
+        tets_[t].vote[i] = tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)];
     }
   });
 }
@@ -181,8 +177,8 @@ SolidLabelling::castFrom (std::uint32_t t)
   const std::uint8_t other = r.label == INSIDE ? OUTSIDE : INSIDE;
   for (int i = 0; i < 4; ++i)
   {
-    const std::uint32_t u = neighbours_[4 * std::size_t (t) + i];
-    if (u != NO_NEIGHBOUR && tets_[u].label == UNKNOWN)
+    const std::uint32_t u = adjacency_.neighbour (t, i);
+    if (u != OUTSIDE_HULL && tets_[u].label == UNKNOWN)
       cast (u, r.vote[i] < 0 ? other : r.label, r.vote[i]);
   }
 }
@@ -220,7 +216,7 @@ SolidLabelling::flood ()
 {
   for (std::uint32_t t = 0; t < tets_.size (); ++t)
     for (int i = 0; i < 4; ++i)
-      if (neighbours_[4 * std::size_t (t) + i] == NO_NEIGHBOUR)
+      if (adjacency_.neighbour (t, i) == OUTSIDE_HULL)
         cast (t, tets_[t].vote[i] < 0 ? INSIDE : OUTSIDE, tets_[t].vote[i]);
   run (nullptr);
   std::vector<std::vector<std::uint32_t>> (BUCKETS).swap (queue_); // every bucket is empty: free them

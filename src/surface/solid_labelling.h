@@ -2,9 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "delaunay/simplicial_complex.h"
+#include "delaunay/tetrahedra.h"
 #include "util/filled_in_parallel.h"
 #include "wrap/subcomplex.h"
-#include "delaunay/simplicial_complex.h"
 
 #include <pcl_wrap/compute_wrap.h>
 
@@ -44,9 +45,9 @@ class SolidLabelling
 {
 public:
   /** \param[in] tetrahedra four vertex ids per tetrahedron
-    * \param[in] neighbours per tetrahedron, the tetrahedron across each facet (opposite the
-    *            vertex of the same slot) or NO_NEIGHBOUR on the hull; read until labels() */
-  SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const FilledInParallel<std::uint32_t>& neighbours,
+    * \param[in] adjacency the same tetrahedra's neighbours (attach() not needed); read until
+    *            labels() */
+  SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                   const std::vector<Point3>& positions, const std::vector<double>& weights);
 
   /** \brief The priority flood from the outside, on the calling thread. */
@@ -73,7 +74,7 @@ private:
   void run (const Subcomplex* x); ///< without X, ties are set aside
   SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
 
-  const FilledInParallel<std::uint32_t>& neighbours_;
+  const Tetrahedra& adjacency_;
   FilledInParallel<Record> tets_;
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
   int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron

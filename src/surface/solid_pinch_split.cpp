@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/solid_pinch_split.h"
-#include "util/portable.h"
 
 #include "util/parallel_for_each.h"
-#include "delaunay/regular_triangulation.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -18,7 +15,7 @@ namespace pcl_wrap::detail
 namespace
 {
 
-constexpr std::uint32_t NONE = NO_NEIGHBOUR;
+constexpr std::uint32_t NONE = ~std::uint32_t (0);
 
 /** A surface triangle seen from the solid: facet i of the solid tetrahedron t. */
 struct Face
@@ -37,23 +34,24 @@ struct Fans
 class StarOfVertex
 {
 public:
-  StarOfVertex (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-                const std::vector<std::uint8_t>& inside)
-    : complex_ (complex), neighbours_ (neighbours), inside_ (inside)
+  StarOfVertex (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
+    : tetrahedra_ (tetrahedra), complex_ (tetrahedra.complex ()), inside_ (inside)
   {}
 
-  /** The fans of the surface triangles around \a v, one of whose tetrahedra is \a first. Two
+  /** The fans of the surface triangles around \a v. Two
     * triangles along an edge (v, w) are in one fan when a run of outside tetrahedra around the
     * edge joins them, or for the pinch edges in \a across_solid (sorted keys), a run of solid
     * ones. */
-  Fans fans (std::uint32_t v, std::uint32_t first, const std::vector<std::uint64_t>& across_solid) const
+  Fans fans (std::uint32_t v, const std::vector<std::uint64_t>& across_solid) const
   {
     std::vector<Face> faces;
     std::unordered_map<std::uint64_t, std::uint32_t> face_at; // 4 t + i -> index in faces
     std::unordered_map<std::uint32_t, std::size_t> uses;      // w -> triangles on the edge (v, w)
-    for (std::uint32_t t : star (v, first))
+    Star star;
+    tetrahedra_.gatherStar (v, star);
+    for (std::uint32_t t : star.tetrahedra ())
       for (int i = 0; i < 4; ++i)
-        if (inside_[t] && complex_.vertex (3, t, i) != v && !solid (neighbours_[4 * std::size_t (t) + i]))
+        if (inside_[t] && complex_.vertex (3, t, i) != v && !solid (tetrahedra_.neighbour (t, i)))
         {
           face_at.emplace (4 * std::uint64_t (t) + i, static_cast<std::uint32_t> (faces.size ()));
           faces.push_back ({t, i});
@@ -61,13 +59,7 @@ public:
             if (j != i && complex_.vertex (3, t, j) != v)
               ++uses[complex_.vertex (3, t, j)];
         }
-    std::vector<std::uint32_t> parent (faces.size ());
-    std::iota (parent.begin (), parent.end (), 0u);
-    const auto find = [&] (std::uint32_t a) {
-      while (parent[a] != a)
-        a = parent[a] = parent[parent[a]];
-      return a;
-    };
+    UnionFind fan (faces.size ());
     for (std::uint32_t f = 0; f < faces.size (); ++f)
       for (int j = 0; j < 4; ++j)
       {
@@ -77,7 +69,7 @@ public:
         const bool through_solid =
             uses[w] == 2 || std::binary_search (across_solid.begin (), across_solid.end (), edgeKey (v, w));
         const Face g = through_solid ? acrossTheSolid (faces[f], v, w) : acrossTheOutside (faces[f], v, w);
-        parent[find (f)] = find (face_at.at (4 * std::uint64_t (g.t) + g.i));
+        fan.attach (f, face_at.at (4 * std::uint64_t (g.t) + g.i));
       }
     // Fans in the order of their lowest triangle ids: the first keeps v.
     std::vector<std::pair<SimplexId, std::uint32_t>> by_id; // triangle id, face
@@ -88,7 +80,7 @@ public:
     Fans out;
     for (const auto& [id, f] : by_id)
     {
-      const auto [at, is_new] = fan_of_root.emplace (find (f), fan_of_root.size ());
+      const auto [at, is_new] = fan_of_root.emplace (fan.find (f), fan_of_root.size ());
       if (at->second == 0)
         continue;
       if (is_new)
@@ -102,22 +94,7 @@ public:
   }
 
 private:
-  bool solid (std::uint32_t t) const { return t != NONE && inside_[t]; }
-
-  /** The tetrahedra that contain \a v, found from \a first across the facets that contain v. */
-  std::vector<std::uint32_t> star (std::uint32_t v, std::uint32_t first) const
-  {
-    std::vector<std::uint32_t> star{first};
-    std::unordered_set<std::uint32_t> seen{first};
-    for (std::size_t k = 0; k < star.size (); ++k)
-      for (int i = 0; i < 4; ++i)
-      {
-        const std::uint32_t u = neighbours_[4 * std::size_t (star[k]) + i];
-        if (complex_.vertex (3, star[k], i) != v && u != NONE && seen.insert (u).second)
-          star.push_back (u);
-      }
-    return star;
-  }
+  bool solid (std::uint32_t t) const { return t != OUTSIDE_HULL && inside_[t]; }
 
   /** Of tetrahedron t's two facets that hold the edge (v, w), the one that is not facet i. */
   int otherFacet (std::uint32_t t, int i, std::uint32_t v, std::uint32_t w) const
@@ -128,15 +105,6 @@ private:
     return out;
   }
 
-  /** The facet of u shared with its neighbour t. */
-  int facetTowards (std::uint32_t u, std::uint32_t t) const
-  {
-    int back = 0;
-    while (neighbours_[4 * std::size_t (u) + back] != t)
-      ++back;
-    return back;
-  }
-
   /** From the surface triangle \a f, around its edge (v, w) through solid tetrahedra to the
     * surface triangle that ends the run. */
   Face acrossTheSolid (Face f, std::uint32_t v, std::uint32_t w) const
@@ -144,10 +112,10 @@ private:
     for (Face at = f;;)
     {
       const int out = otherFacet (at.t, at.i, v, w);
-      const std::uint32_t u = neighbours_[4 * std::size_t (at.t) + out];
+      const std::uint32_t u = tetrahedra_.neighbour (at.t, out);
       if (!solid (u))
         return {at.t, out};
-      at = {u, facetTowards (u, at.t)};
+      at = {u, tetrahedra_.mirrorIndex (at.t, out)};
     }
   }
 
@@ -160,16 +128,16 @@ private:
     int leave = f.i;
     for (;;)
     {
-      const std::uint32_t u = neighbours_[4 * std::size_t (t) + leave];
-      if (u == NONE)
+      const std::uint32_t u = tetrahedra_.neighbour (t, leave);
+      if (u == OUTSIDE_HULL)
       {
         // The other way round the edge from f, through every tetrahedron, to the hull again;
         // from there back towards f, where the run goes on.
         t = f.t;
         leave = otherFacet (f.t, f.i, v, w);
-        for (std::uint32_t next; (next = neighbours_[4 * std::size_t (t) + leave]) != NONE;)
+        for (std::uint32_t next; (next = tetrahedra_.neighbour (t, leave)) != OUTSIDE_HULL;)
         {
-          leave = otherFacet (next, facetTowards (next, t), v, w);
+          leave = otherFacet (next, tetrahedra_.mirrorIndex (t, leave), v, w);
           t = next;
         }
         if (inside_[t])
@@ -177,42 +145,33 @@ private:
         leave = otherFacet (t, leave, v, w);
         continue;
       }
+      const int back = tetrahedra_.mirrorIndex (t, leave);
       if (inside_[u])
-        return {u, facetTowards (u, t)};
-      leave = otherFacet (u, facetTowards (u, t), v, w);
+        return {u, back};
+      leave = otherFacet (u, back, v, w);
       t = u;
     }
   }
 
+  const Tetrahedra& tetrahedra_;
   const SimplicialComplex& complex_;
-  const FilledInParallel<std::uint32_t>& neighbours_;
   const std::vector<std::uint8_t>& inside_;
 };
 
 } // namespace
 
 std::optional<ManifoldSplit>
-splitSolidPinches (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-                   const std::vector<std::uint8_t>& inside, const Boundary& w,
+splitSolidPinches (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside, const Boundary& w,
                    const std::vector<std::uint32_t>& pinched)
 {
-  const std::uint32_t n = complex.numVertices ();
+  const std::uint32_t n = tetrahedra.complex ().numVertices ();
   std::vector<std::uint32_t> vertices (pinched);
   std::sort (vertices.begin (), vertices.end ());
   vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
-  std::vector<std::uint32_t> slot_of (n, NONE), first_tet (vertices.size (), 0);
+  std::vector<std::uint32_t> slot_of (n, NONE);
   for (std::uint32_t s = 0; s < vertices.size (); ++s)
     slot_of[vertices[s]] = s;
-  // A tetrahedron of each pinched vertex, the highest-numbered so that the answer is unique.
-  parallelForEach (complex.size (3), [&] (std::size_t id) {
-    const auto t = static_cast<std::uint32_t> (id);
-    for (int i = 0; i < 4; ++i)
-      if (const std::uint32_t s = slot_of[complex.vertex (3, t, i)]; s != NONE)
-        for (std::uint32_t seen = relaxedLoad (&first_tet[s]); seen < t && !relaxedCompareExchange (&first_tet[s], seen, t);)
-        {
-        }
-  });
-  const StarOfVertex stars (complex, neighbours, inside);
+  const StarOfVertex stars (tetrahedra, inside);
   const auto at_pinch = [&] (std::uint32_t v) { return v >= n || slot_of[v] != NONE; };
   std::vector<std::uint8_t> near_pinch (w.triangles.size (), 0);
   parallelForEach (w.triangles.size (), [&] (std::size_t k) {
@@ -227,7 +186,7 @@ splitSolidPinches (const SimplicialComplex& complex, const FilledInParallel<std:
   for (int round = 0; round < 8; ++round)
   {
     std::vector<Fans> fans (vertices.size ());
-    parallelForEach (vertices.size (), [&] (std::size_t s) { fans[s] = stars.fans (vertices[s], first_tet[s], across_solid); }, 1);
+    parallelForEach (vertices.size (), [&] (std::size_t s) { fans[s] = stars.fans (vertices[s], across_solid); }, 1);
     ManifoldSplit out;
     std::vector<std::array<std::uint32_t, 3>> copies; // triangle id, vertex, its copy
     std::vector<std::uint64_t> pinch_edges;

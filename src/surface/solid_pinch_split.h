@@ -2,10 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "delaunay/tetrahedra.h"
 #include "wrap/boundary.h"
-#include "util/filled_in_parallel.h"
 #include "wrap/manifold_split.h"
-#include "delaunay/simplicial_complex.h"
 
 #include <cstdint>
 #include <optional>
@@ -21,13 +20,12 @@ namespace pcl_wrap::detail
   * that touch along the edge stay joined there), or, where that joins two copies of the edge to
   * the same two vertices, a run of solid ones. The first fan (by lowest triangle id) keeps the
   * vertex, every other gets a copy.
-  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet or NO_NEIGHBOUR
+  * \param[in] tetrahedra attached to their complex
   * \param[in] pinched every vertex where the triangles of \a w do not make one fan
   * \return nothing where an edge with more than four triangles needs yet another way to glue
   *         them; splitPinches() then decides */
 std::optional<ManifoldSplit>
-splitSolidPinches (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-                   const std::vector<std::uint8_t>& inside, const Boundary& w,
+splitSolidPinches (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside, const Boundary& w,
                    const std::vector<std::uint32_t>& pinched);
 
 } // namespace pcl_wrap::detail

@@ -2,9 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
-#include "util/filled_in_parallel.h"
-#include "delaunay/simplicial_complex.h"
+#include "delaunay/tetrahedra.h"
 #include "surface/solid_labelling.h"
+#include "wrap/subcomplex.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -28,12 +28,11 @@ struct SolidRepair
   *   changes side;
   * - a vertex buried inside the solid (or floating outside it) gets its weakest tetrahedron that
   *   touches the surface moved out (or in), which puts it on the surface.
-  * - parts of the solid cut off from the rest are joined to it along X (see docs/surface.md).
-  * Each tetrahedron changes side at most once, so the repair ends; a pinch it cannot mend is left
-  * to the pinch split (splitSolidPinches()).
-  * \param[in] neighbours as for SolidLabelling */
+  * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX()).
+  * Each tetrahedron changes side at most once in the mending, so the repair ends; a pinch it
+  * cannot mend is left to the pinch split (splitSolidPinches()).
+  * \param[in] tetrahedra attached to their complex */
 SolidRepair
-repairSolid (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours, const Subcomplex& x,
-             SolidLabels& labels);
+repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels);
 
 } // namespace pcl_wrap::detail

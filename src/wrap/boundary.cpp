@@ -175,19 +175,18 @@ extractBoundary (const SimplicialComplex& complex, const Subcomplex& x)
 }
 
 Boundary
-extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-                      const std::vector<std::uint8_t>& inside)
+extractSolidBoundary (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
 {
   Boundary w;
   writeFacets (
-      complex,
+      tetrahedra.complex (),
       [&] (std::size_t t) {
         unsigned mask = 0;
         if (inside[t])
           for (int i = 0; i < 4; ++i)
           {
-            const std::uint32_t u = neighbours[4 * t + i];
-            if (u == NO_NEIGHBOUR || !inside[u])
+            const std::uint32_t u = tetrahedra.neighbour (static_cast<std::uint32_t> (t), i);
+            if (u == OUTSIDE_HULL || !inside[u])
               mask |= 1u << i;
           }
         return mask;

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "delaunay/tetrahedra.h"
 #include "util/filled_in_parallel.h"
 #include "wrap/subcomplex.h"
 #include "delaunay/simplicial_complex.h"
@@ -34,9 +35,8 @@ extractBoundary (const SimplicialComplex& complex, const Subcomplex& x);
 /** \brief The boundary of the tetrahedra flagged in \a inside (which have no lower-dimensional
   * parts to leave sheets): the facets between an inside and an outside tetrahedron, or the hull,
   * oriented away from the inside one, in the order of the tetrahedra.
-  * \param[in] neighbours per tetrahedron, the tetrahedron across each facet or NO_NEIGHBOUR */
+  * \param[in] tetrahedra attached to their complex */
 Boundary
-extractSolidBoundary (const SimplicialComplex& complex, const FilledInParallel<std::uint32_t>& neighbours,
-                      const std::vector<std::uint8_t>& inside);
+extractSolidBoundary (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
 
 } // namespace pcl_wrap::detail

@@ -21,6 +21,8 @@ struct ManifoldSplit
     * numVertices()]. A sheet triangle appears once per side, in opposite orientations. */
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> copy_of;
+  /** \brief The vertex that \a v is or copies, for a complex of \a nv vertices. */
+  std::uint32_t original (std::uint32_t v, std::uint32_t nv) const { return v < nv ? v : copy_of[v - nv]; }
   std::size_t pinch_edges = 0;     ///< edges of W on more than two sides, split
   std::size_t pinch_vertices = 0;  ///< vertices whose triangles form more than one fan, split
   std::size_t sheet_triangles = 0; ///< triangles with the outside on both sides, doubled

@@ -57,8 +57,8 @@ public:
   const detail::SimplicialComplex& complex = engine_->complex ();
   const detail::PowerPredicates* const predicates = &engine_->predicates ();
   const detail::Classification& classification = engine_->classification ();
-  /** Per tetrahedron, the tetrahedron across each facet (the default output only). */
-  const detail::FilledInParallel<std::uint32_t>& neighbours = engine_->neighbours ();
+  /** How the tetrahedra meet (the default output only). */
+  const detail::Tetrahedra& tetrahedra = engine_->tetrahedra ();
 
   int dimension () const { return complex.dimension (); }
 

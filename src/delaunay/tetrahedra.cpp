@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "delaunay/tetrahedra.h"
+
+#include "util/parallel_for_each.h"
+#include "util/portable.h"
+
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+
+std::uint32_t
+Star::indexOf (std::uint32_t t) const
+{
+  for (std::uint32_t at = home (t);; at = (at + 1) & mask ())
+    if (keys_[at] == t)
+      return slots_[at];
+    else if (keys_[at] == NOT_IN_STAR)
+      return NOT_IN_STAR;
+}
+
+void
+Star::clear (std::uint32_t vertex)
+{
+  for (std::uint32_t at : used_)
+    keys_[at] = NOT_IN_STAR;
+  used_.clear ();
+  tetrahedra_.clear ();
+  vertex_ = vertex;
+}
+
+bool
+Star::add (std::uint32_t t)
+{
+  if (2 * (used_.size () + 1) > keys_.size ())
+    grow ();
+  std::uint32_t at = home (t);
+  for (; keys_[at] != NOT_IN_STAR; at = (at + 1) & mask ())
+    if (keys_[at] == t)
+      return false;
+  keys_[at] = t;
+  slots_[at] = static_cast<std::uint32_t> (tetrahedra_.size ());
+  used_.push_back (at);
+  tetrahedra_.push_back (t);
+  return true;
+}
+
+void
+Star::grow ()
+{
+  for (std::uint32_t at : used_)
+    keys_[at] = NOT_IN_STAR;
+  used_.clear ();
+  keys_.assign (2 * keys_.size (), NOT_IN_STAR);
+  slots_.resize (keys_.size ());
+  std::vector<std::uint32_t> found;
+  found.swap (tetrahedra_);
+  for (std::uint32_t t : found)
+    add (t);
+}
+
+Tetrahedra::Tetrahedra (FilledInParallel<std::uint32_t> neighbours) : neighbours_ (std::move (neighbours)) {}
+
+void
+Tetrahedra::attach (const SimplicialComplex& complex)
+{
+  complex_ = &complex;
+  tetrahedron_of_vertex_.assign (complex.numVertices (), NO_TETRAHEDRON);
+  parallelForEach (complex.size (3), [&] (std::size_t id) {
+    const auto t = static_cast<std::uint32_t> (id);
+    for (int i = 0; i < 4; ++i)
+    {
+      std::uint32_t* at = &tetrahedron_of_vertex_[complex.vertex (3, t, i)];
+      std::uint32_t seen = relaxedLoad (at);
+      while ((seen == NO_TETRAHEDRON || seen < t) && !relaxedCompareExchange (at, seen, t))
+      {
+      }
+    }
+  });
+}
+
+void
+Tetrahedra::gatherStar (std::uint32_t v, Star& star) const
+{
+  star.clear (v);
+  const std::uint32_t first = tetrahedronOf (v);
+  if (first == NO_TETRAHEDRON)
+    return;
+  star.add (first);
+  for (std::size_t k = 0; k < star.size (); ++k)
+  {
+    const std::uint32_t t = star[k];
+    for (int i = 0; i < 4; ++i)
+      if (vertex (t, i) != v && neighbour (t, i) != OUTSIDE_HULL)
+        star.add (neighbour (t, i)); // across a facet that holds v
+  }
+}
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "delaunay/simplicial_complex.h"
+#include "util/filled_in_parallel.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Across a facet of the convex hull: no tetrahedron, the outside for good. */
+constexpr std::uint32_t OUTSIDE_HULL = ~std::uint32_t (0);
+/** \brief No tetrahedron (of a vertex on none). */
+constexpr std::uint32_t NO_TETRAHEDRON = ~std::uint32_t (0);
+
+/** \brief The tetrahedra around one vertex, gathered by Tetrahedra::gatherStar(). Reused from star
+  * to star by one thread, so that gathering allocates nothing once warm; each thread that gathers
+  * stars has its own. */
+class Star
+{
+public:
+  Star () : keys_ (256, NOT_IN_STAR), slots_ (256) {}
+
+  static constexpr std::uint32_t NOT_IN_STAR = ~std::uint32_t (0);
+
+  std::uint32_t vertex () const { return vertex_; }
+  /** \brief The tetrahedra, in the order they were found. */
+  const std::vector<std::uint32_t>& tetrahedra () const { return tetrahedra_; }
+  std::size_t size () const { return tetrahedra_.size (); }
+  bool empty () const { return tetrahedra_.empty (); }
+  std::uint32_t operator[] (std::size_t k) const { return tetrahedra_[k]; }
+  /** \brief Where tetrahedron \a t is in tetrahedra(), or NOT_IN_STAR. */
+  std::uint32_t indexOf (std::uint32_t t) const;
+
+private:
+  friend class Tetrahedra;
+  void clear (std::uint32_t vertex);
+  /** Appends \a t unless it is there already; returns whether it was new. */
+  bool add (std::uint32_t t);
+  std::uint32_t mask () const { return static_cast<std::uint32_t> (keys_.size () - 1); }
+  std::uint32_t home (std::uint32_t t) const { return (t * 2654435761u) >> 8 & mask (); }
+  void grow ();
+
+  std::uint32_t vertex_ = 0;
+  std::vector<std::uint32_t> tetrahedra_;
+  // A small open-addressing table from tetrahedron to its place, emptied in the time it was filled.
+  std::vector<std::uint32_t> keys_, slots_, used_;
+};
+
+/** \brief The tetrahedra of Del S and how they meet: the tetrahedron across each facet, the facet
+  * it is seen through from there, and the tetrahedra around a vertex; what a triangulation data
+  * structure such as CGAL's gives (neighbor, mirror_index, incident_cells), over flat arrays.
+  *
+  * It starts from the triangulation's neighbour array, before the complex is built (the default
+  * surface's votes and flood need only that); attach() adds the complex, whose tetrahedra are the
+  * same, for their vertices and the stars. */
+class Tetrahedra
+{
+public:
+  Tetrahedra () = default;
+  /** \param[in] neighbours per tetrahedron, the tetrahedron across the facet opposite each of its
+    *            vertex slots, or OUTSIDE_HULL */
+  explicit Tetrahedra (FilledInParallel<std::uint32_t> neighbours);
+
+  /** \brief The complex built on the same tetrahedra; finds each vertex's highest-numbered
+    * tetrahedron, where its star is gathered from, on all threads. */
+  void attach (const SimplicialComplex& complex);
+
+  std::size_t size () const { return neighbours_.size () / 4; }
+  /** \brief The tetrahedron across facet \a i of \a t (opposite its vertex i), or OUTSIDE_HULL. */
+  std::uint32_t neighbour (std::uint32_t t, int i) const { return neighbours_[4 * std::size_t (t) + i]; }
+  /** \brief The facet of neighbour (t, i) through which it sees \a t. */
+  int mirrorIndex (std::uint32_t t, int i) const
+  {
+    const std::uint32_t* across = &neighbours_[4 * std::size_t (neighbour (t, i))];
+    int j = 0;
+    while (across[j] != t)
+      ++j;
+    return j;
+  }
+  /** \brief Per tetrahedron, its four neighbours: the array the complex is built from. */
+  const FilledInParallel<std::uint32_t>& neighbourArray () const { return neighbours_; }
+
+  /** \name After attach() */
+  ///@{
+  const SimplicialComplex& complex () const { return *complex_; }
+  std::uint32_t vertex (std::uint32_t t, int i) const { return complex_->vertex (3, t, i); }
+  const std::uint32_t* vertices (std::uint32_t t) const { return complex_->vertices (3, t); }
+  bool hasVertex (std::uint32_t t, std::uint32_t v) const
+  {
+    const std::uint32_t* a = vertices (t);
+    return a[0] == v || a[1] == v || a[2] == v || a[3] == v;
+  }
+  /** \brief The highest-numbered tetrahedron of \a v, or NO_TETRAHEDRON for a vertex of none. */
+  std::uint32_t tetrahedronOf (std::uint32_t v) const { return tetrahedron_of_vertex_[v]; }
+  /** \brief \a star := the tetrahedra that contain \a v, breadth first from tetrahedronOf (v)
+    * across the facets that contain v, each in the order of its facets: an order that depends on
+    * the triangulation alone. */
+  void gatherStar (std::uint32_t v, Star& star) const;
+  ///@}
+
+private:
+  FilledInParallel<std::uint32_t> neighbours_;
+  const SimplicialComplex* complex_ = nullptr;
+  FilledInParallel<std::uint32_t> tetrahedron_of_vertex_;
+};
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "surface/default_surface.h"
+
+#include "surface/single_layer.h"
+#include "surface/solid_pinch_split.h"
+#include "surface/solid_repair.h"
+
+#include <memory>
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+
+DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
+                                const std::vector<Point3>& positions, const std::vector<double>& weights)
+  : adjacency_ (adjacency)
+{
+  // The flood reads nothing but the votes and the neighbours, so it runs on one thread while the
+  // others build the complex and compute X, which it needs only to break exact ties.
+  labelling_.emplace (tetrahedra, adjacency, positions, weights);
+  flooding_.run ([this] { labelling_->flood (); });
+}
+
+DefaultSurface::~DefaultSurface ()
+{
+  if (!labelling_)
+    return;
+  try
+  {
+    flooding_.wait ();
+  }
+  catch (...)
+  {
+  }
+}
+
+DefaultSurface::Output
+DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, WrapStatistics& stats,
+                         StageClock& clock)
+{
+  const SimplicialComplex& complex = adjacency_.complex ();
+  flooding_.wait ();
+  SolidLabels labels = labelling_->labels (x);
+  labelling_.reset ();
+  clock.stageDone ("labelling");
+  const bool single_layer = !labels.hull && isSingleLayer (complex, x, labels.inside);
+  const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (adjacency_, x, labels);
+  stats.tetrahedra_moved = repair.flipped;
+  clock.stageDone ("repair");
+
+  // The boundary of the labelled solid, repaired to a manifold; where the repair leaves it
+  // touching itself, split there, at the pinched vertices alone or, when an edge needs more than
+  // the two simple pairings, as the raw output's pinches are split.
+  Output out;
+  out.w = extractSolidBoundary (adjacency_, labels.inside);
+  std::unique_ptr<Subcomplex> pinched_solid;
+  if (!repair.pinched.empty ())
+  {
+    out.split = splitSolidPinches (adjacency_, labels.inside, out.w, repair.pinched);
+    if (!out.split)
+    {
+      pinched_solid = std::make_unique<Subcomplex> (complex, solidSubcomplex (complex, labels.inside));
+      out.w = extractBoundary (complex, *pinched_solid);
+    }
+  }
+  const std::size_t on_solid = single_layer ? verticesOn (out.w.triangles) : 0;
+  if (single_layer && on_solid < complex.numVertices ())
+  {
+    // The labelled solid is not Wrap's and leaves points off its surface: the points are one
+    // layer, and X is that layer.
+    TwoSidedShell shell = twoSidedShell (adjacency_, positions, x);
+    if (verticesOn (shell.w.triangles) > on_solid)
+    {
+      stats.single_layer = true;
+      stats.bridge_simplices = shell.bridges;
+      return {std::move (shell.w), std::move (shell.split)};
+    }
+  }
+  if (pinched_solid)
+    out.split = splitPinches (complex, *pinched_solid, out.w);
+  return out;
+}
+
+} // namespace pcl_wrap::detail
