@@ -31,9 +31,10 @@ printUsage (std::ostream& out)
          "writes it to OUTPUT (.ply .obj .vtk). The output's vertices are the input points in input order,\n"
          "so a face's indices are input point indices.\n\n"
          "options:\n"
-         "  --complex FILE.json   write the complex: X by dimension, W, hidden points, class counts,\n"
-         "                        the deletion counts and the wrap filtration (each simplex of X with\n"
-         "                        the sink size at which it leaves; all sink sizes)\n"
+         "  --complex FILE.json   write the complex: X by dimension, the paper's W = Bd X, the output\n"
+         "                        surface, hidden points, class counts, the deletion counts and the\n"
+         "                        wrap filtration (each simplex of X with the sink size at which it\n"
+         "                        leaves; all sink sizes)\n"
          "  --stats               print a summary\n"
          "  --stats-json FILE     write the statistics, with timings per stage, as JSON\n"
          "  --delta D             wrap tighter: delete sinks (empty spheres) of squared radius > D\n"
@@ -46,7 +47,7 @@ printUsage (std::ostream& out)
          "                        local modification: front deletion with the threshold above starts\n"
          "                        only from the surface inside this region\n"
          "  --raw                 write the paper's W = Bd X as it is (pinch edges and vertices,\n"
-         "                        sheets) instead of the default clean surface, a closed oriented\n"
+         "                        sheets) instead of the default surface, a closed oriented\n"
          "                        2-manifold through the points\n"
          "  --manifold            with --raw: split W where it touches itself, so that the output\n"
          "                        is a closed 2-manifold: copies of the split points follow the input\n"
@@ -233,7 +234,8 @@ main (int argc, char** argv)
       vertices.push_back (points[c]);
     apps::writeMesh (o.output, vertices, result.surface.triangles);
     if (!o.complex_json.empty ())
-      apps::writeAtomically (o.complex_json, [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
+      apps::writeAtomically (o.complex_json,
+                             [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
     if (!o.stats_json.empty ())
       apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { apps::writeStatisticsJson (out, result); });
     if (o.stats)

@@ -2,6 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "point_file.h"
 
+#include "pcl_file_checks.h"
+#include "text_line.h"
+
 #include <pcl_wrap/point_field.h>
 
 #include <pcl/PCLPointCloud2.h>
@@ -41,27 +44,6 @@ extensionOf (const std::string& path)
 fail (const std::string& path, const std::string& problem)
 {
   throw FileError (path + ": " + problem);
-}
-
-/** The whitespace-separated numbers of one line, after a '#' comment is cut off; false when a
-  * token is not a number. "nan" and "inf" are numbers (such points are skipped, not rejected). */
-bool
-parseNumbers (const std::string& line, std::vector<double>& out)
-{
-  out.clear ();
-  const std::string text = line.substr (0, line.find ('#'));
-  std::istringstream tokens (text);
-  std::string token;
-  while (tokens >> token)
-  {
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod (token.c_str (), &end);
-    if (end == token.c_str () || *end != '\0' || errno == ERANGE && std::abs (value) > 1.0)
-      return false;
-    out.push_back (value);
-  }
-  return true;
 }
 
 std::ifstream
@@ -199,207 +181,6 @@ pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path, const std::
   }
 }
 
-/** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:
-  * every token of the data from \a start on must be a number ("nan" and "inf" written out are). */
-template <class Fail>
-void
-checkAsciiData (std::ifstream& in, std::uint64_t start, const Fail& bad)
-{
-  in.clear ();
-  in.seekg (std::streamoff (start));
-  std::vector<double> numbers;
-  std::string line;
-  for (std::size_t number = 1; std::getline (in, line); ++number)
-    if (!parseNumbers (line, numbers))
-      bad ("data line " + std::to_string (number) + ": not a number");
-}
-
-/** PCL's PCD reader goes on parsing header lines after DATA, skipping blank lines and comments,
-  * until a line that is no keyword: binary data that starts with one (found by fuzzing) would
-  * redefine the fields after they were checked. Does the data from \a in on start so? */
-bool
-dataReadsAsHeader (std::ifstream& in)
-{
-  static const char* const KEYWORDS[] = {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
-                                         "WIDTH",   "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
-  std::string line;
-  while (std::getline (in, line))
-  {
-    if (line.empty ())
-      continue;
-    std::istringstream words (line);
-    std::string first;
-    if (!(words >> first))
-      return false; // PCL stops at a line of blanks
-    if (first[0] == '#')
-      continue;
-    for (const char* keyword : KEYWORDS)
-      if (first.compare (0, std::strlen (keyword), keyword) == 0)
-        return true;
-    return false;
-  }
-  return false;
-}
-
-/** PCL's PCD reader trusts the header and corrupts memory on a malformed one (found by
-  * fuzzing): check the header strictly, and the data size it declares against the file, before
-  * handing the file over. */
-void
-checkPcdHeader (const std::string& path)
-{
-  const auto bad = [&] (const std::string& what) { fail (path, "malformed PCD file: " + what); };
-  std::ifstream in (path, std::ios::binary);
-  std::vector<std::vector<std::string>> lines; // keyword and values, comments skipped
-  std::string line;
-  while (std::getline (in, line) && line.size () < 65536)
-  {
-    std::istringstream words (line);
-    std::vector<std::string> tokens;
-    for (std::string word; words >> word;)
-      tokens.push_back (word);
-    if (tokens.empty ())
-      bad ("blank line in the header"); // PCL's reader crashes on one (found by fuzzing)
-    if (tokens[0][0] == '#')
-      continue;
-    lines.push_back (tokens);
-    if (tokens[0] == "DATA")
-      break;
-  }
-  const std::vector<std::string> order = {"VERSION", "FIELDS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
-  std::map<std::string, std::vector<std::string>> header;
-  std::size_t next = 0;
-  for (const auto& tokens : lines)
-  {
-    while (next < order.size () && order[next] != tokens[0])
-      ++next;
-    if (next == order.size ())
-      bad ("unexpected or misplaced header line '" + tokens[0] + "'");
-    header[tokens[0]] = {tokens.begin () + 1, tokens.end ()};
-    ++next;
-  }
-  for (const char* required : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS", "DATA"})
-    if (!header.count (required))
-      bad (std::string ("no ") + required + " line");
-  const auto number = [&] (const std::string& text, unsigned long max) {
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long v = std::strtoul (text.c_str (), &end, 10);
-    if (text.empty () || text[0] == '-' || *end != '\0' || errno != 0 || v > max)
-      bad ("bad number '" + text + "'");
-    return v;
-  };
-  const auto& fields = header["FIELDS"];
-  const std::size_t n = fields.size ();
-  if (n == 0 || n > 1024 || header["SIZE"].size () != n || header["TYPE"].size () != n ||
-      (header.count ("COUNT") && header["COUNT"].size () != n))
-    bad ("FIELDS, SIZE, TYPE and COUNT differ in length");
-  std::uint64_t point_size = 0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const unsigned long size = number (header["SIZE"][i], 8);
-    const std::string& type = header["TYPE"][i];
-    const unsigned long count = header.count ("COUNT") ? number (header["COUNT"][i], 1u << 20) : 1;
-    if ((size != 1 && size != 2 && size != 4 && size != 8) || (type != "I" && type != "U" && type != "F") ||
-        (type == "F" && size < 4) || count == 0)
-      bad ("field " + fields[i] + " has a bad SIZE, TYPE or COUNT");
-    point_size += size * count;
-  }
-  if (header["WIDTH"].size () != 1 || header["HEIGHT"].size () != 1 || header["POINTS"].size () != 1 ||
-      header["DATA"].size () != 1)
-    bad ("WIDTH, HEIGHT, POINTS and DATA take one value");
-  const std::uint64_t points = std::uint64_t (number (header["WIDTH"][0], 0xffffffffUL)) * number (header["HEIGHT"][0], 0xffffffffUL);
-  if (points != number (header["POINTS"][0], ~0ul))
-    bad ("POINTS is not WIDTH x HEIGHT");
-  const std::string& data = header["DATA"][0];
-  const std::uint64_t start = static_cast<std::uint64_t> (in.tellg ());
-  if (dataReadsAsHeader (in))
-    bad ("the data starts with a header keyword, which PCL's reader would parse as a header line");
-  in.clear ();
-  in.seekg (0, std::ios::end);
-  const std::uint64_t available = static_cast<std::uint64_t> (in.tellg ()) - start;
-  if (data == "binary")
-  {
-    if (points > available / point_size)
-      bad ("binary data shorter than " + std::to_string (points) + " points");
-  }
-  else if (data == "binary_compressed")
-  {
-    std::uint32_t sizes[2] = {0, 0}; // compressed, uncompressed
-    in.seekg (std::streamoff (start));
-    if (!in.read (reinterpret_cast<char*> (sizes), sizeof (sizes)) || sizes[0] > available - 8 ||
-        points > 0xffffffffULL / point_size || std::uint64_t (sizes[1]) != points * point_size)
-      bad ("compressed data does not match its header");
-  }
-  else if (data == "ascii")
-    checkAsciiData (in, start, bad);
-  else
-    bad ("unknown DATA '" + data + "'");
-}
-
-/** PCL's PLY reader allocates what the header declares before reading the data (2e9 vertices
-  * cost 23 GB): check that the declared elements can fit in the file before handing it over. */
-void
-checkPlyHeader (const std::string& path)
-{
-  const auto bad = [&] (const std::string& what) { fail (path, "malformed PLY file: " + what); };
-  std::ifstream in (path, std::ios::binary);
-  std::string line, format;
-  static const std::map<std::string, unsigned> SIZES = {
-      {"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2},
-      {"uint16", 2}, {"int", 4}, {"uint", 4}, {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4},
-      {"double", 8}, {"float64", 8}};
-  std::vector<std::pair<std::uint64_t, std::uint64_t>> elements; // count, least bytes per item
-  if (!std::getline (in, line) || line.substr (0, 3) != "ply")
-    bad ("no ply magic");
-  while (std::getline (in, line) && line.substr (0, 10) != "end_header")
-  {
-    std::istringstream words (line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "format")
-      words >> format;
-    else if (keyword == "element")
-    {
-      std::string name;
-      double count = -1;
-      if (!(words >> name >> count) || count < 0 || count != std::floor (count) || count > 1e15)
-        bad ("bad element line");
-      elements.emplace_back (static_cast<std::uint64_t> (count), 0);
-    }
-    else if (keyword == "property")
-    {
-      std::string type;
-      words >> type;
-      if (type == "list")
-        words >> type; // the item count's type: the least a list takes
-      if (elements.empty () || !SIZES.count (type))
-        bad ("bad property line");
-      elements.back ().second += format == "ascii" ? 2 : SIZES.at (type); // ascii: a digit and a space
-    }
-  }
-  if (!in)
-    bad ("no end_header");
-  // PCL reads "end_header" only as a word of its own, and takes a line that merely starts with it
-  // as more header (found by fuzzing: an element declared there was never checked here).
-  if (line.find_first_not_of (" \t\r", 10) != std::string::npos)
-    bad ("text after end_header on its line");
-  if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
-    bad ("unknown format '" + format + "'");
-  const std::uint64_t start = static_cast<std::uint64_t> (in.tellg ());
-  in.seekg (0, std::ios::end);
-  std::uint64_t available = static_cast<std::uint64_t> (in.tellg ()) - start;
-  for (const auto& [count, least] : elements)
-  {
-    if (least == 0 && count > 0) // PCL's reader loops over its items all the same (found by fuzzing)
-      bad ("an element with items but no properties");
-    if (least > 0 && count > available / least)
-      bad ("the header declares more data than the file holds");
-    available -= count * least;
-  }
-  if (format == "ascii")
-    checkAsciiData (in, start, bad);
-}
-
 PointFile
 readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
 {
@@ -413,9 +194,9 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
   try
   {
     if (pcd)
-      checkPcdHeader (path);
+      checkPcdFile (path);
     else
-      checkPlyHeader (path);
+      checkPlyFile (path);
     status = pcd ? pcl::io::loadPCDFile (path, cloud) : pcl::io::loadPLYFile (path, cloud);
   }
   catch (const FileError&)

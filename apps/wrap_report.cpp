@@ -55,6 +55,29 @@ sortedSimplices (const std::vector<PointIndex>& flat)
   return out;
 }
 
+/** {"triangles", "edges", "vertices" of a surface, every list sorted and triangles rotated to start
+  * at their smallest index (their orientation kept); the object is left open. */
+void
+writeSurface (std::ostream& out, const WrapSurface& surface)
+{
+  auto triangles = surface.triangles;
+  for (auto& t : triangles)
+    std::rotate (t.begin (), std::min_element (t.begin (), t.end ()), t.end ());
+  std::sort (triangles.begin (), triangles.end ());
+  auto edges = surface.dangling_edges;
+  for (auto& e : edges)
+    std::sort (e.begin (), e.end ());
+  std::sort (edges.begin (), edges.end ());
+  auto vertices = surface.isolated_vertices;
+  std::sort (vertices.begin (), vertices.end ());
+  out << "{\"triangles\":";
+  writeTuples (out, triangles);
+  out << ",\"edges\":";
+  writeTuples (out, edges);
+  out << ",\"vertices\":";
+  writeList (out, vertices);
+}
+
 } // namespace
 
 void
@@ -79,22 +102,10 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
   out << ",\"3\":";
   writeTuples (out, sortedSimplices<4> (result.xSimplices (3)));
 
-  auto triangles = result.surface.triangles;
-  for (auto& t : triangles)
-    std::rotate (t.begin (), std::min_element (t.begin (), t.end ()), t.end ());
-  std::sort (triangles.begin (), triangles.end ());
-  auto edges = result.surface.dangling_edges;
-  for (auto& e : edges)
-    std::sort (e.begin (), e.end ());
-  std::sort (edges.begin (), edges.end ());
-  auto vertices = result.surface.isolated_vertices;
-  std::sort (vertices.begin (), vertices.end ());
-  out << "},\"W\":{\"triangles\":";
-  writeTuples (out, triangles);
-  out << ",\"edges\":";
-  writeTuples (out, edges);
-  out << ",\"vertices\":";
-  writeList (out, vertices);
+  out << "},\"W\":";
+  writeSurface (out, result.w);
+  out << "},\"surface\":";
+  writeSurface (out, result.surface);
   out << ",\"copies\":";
   writeList (out, result.copies);
 
@@ -190,12 +201,16 @@ printSummary (std::ostream& out, const WrapStatistics& s)
       << " edges, " << del[2] << " triangles, " << del[3] << " tetrahedra\n"
       << "sinks:         ";
   for (int k = 0; k <= 3; ++k)
-    out << (k ? ", " : "") << s.simplices[k][0] << " centered " << (k == 0 ? "vertices" : k == 1 ? "edges" : k == 2 ? "triangles" : "tetrahedra");
+    out << (k ? ", " : "") << s.simplices[k][0] << " centered "
+        << (k == 0   ? "vertices"
+            : k == 1 ? "edges"
+            : k == 2 ? "triangles"
+                     : "tetrahedra");
   if (std::isfinite (s.delta) || s.sinks_deleted > 0)
   {
-    out << "\ndeletion:      spacing " << s.spacing << ", threshold " << s.delta << " (radius " << std::sqrt (std::max (s.delta, 0.0))
-        << "), " << s.sinks_deleted << " of " << s.sinks << " sinks deleted, " << s.sinks_enclosed << " enclosed, "
-        << s.sinks_not_principal << " not principal; largest sinks";
+    out << "\ndeletion:      spacing " << s.spacing << ", threshold " << s.delta << " (radius "
+        << std::sqrt (std::max (s.delta, 0.0)) << "), " << s.sinks_deleted << " of " << s.sinks << " sinks deleted, "
+        << s.sinks_enclosed << " enclosed, " << s.sinks_not_principal << " not principal; largest sinks";
     for (double size : s.largest_sinks)
       out << ' ' << size;
   }

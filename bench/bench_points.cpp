@@ -51,7 +51,8 @@ boundingBoxDiagonal (const std::vector<Point3>& points)
   for (const auto& q : points)
     for (int i = 0; i < 3; ++i)
       lo[i] = std::min (lo[i], q[i]), hi[i] = std::max (hi[i], q[i]);
-  return std::sqrt ((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  return std::sqrt ((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                    (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
 } // namespace pcl_wrap::bench

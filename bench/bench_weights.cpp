@@ -55,8 +55,8 @@ main (int argc, char** argv)
     std::set<pcl_wrap::PointIndex> on_w;
     for (const auto& t : r.surface.triangles)
       on_w.insert (t.begin (), t.end ());
-    std::printf ("%6.2f %12zu %11.1f%% %10zu %10.3f\n", c, r.surface.triangles.size (), 100.0 * on_w.size () / points.size (),
-                 r.statistics.points_hidden, r.statistics.total_seconds);
+    std::printf ("%6.2f %12zu %11.1f%% %10zu %10.3f\n", c, r.surface.triangles.size (),
+                 100.0 * on_w.size () / points.size (), r.statistics.points_hidden, r.statistics.total_seconds);
   }
   return 0;
 }

@@ -208,13 +208,17 @@ main (int argc, char** argv)
   const Measurement parallel = measured (delaunayParallel);
   const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
 
-  std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB; %s)\n", shape.c_str (), points.size (), seed,
-               runs, runs == 1 ? "" : "s", baseline.peak_kib / 1024.0,
-               cold ? "cold: no memory warmed" : ("memory warmed before each, up to " + std::to_string (warm >> 20) + " MiB").c_str ());
+  std::printf ("%s n=%zu seed=%u, best of %d run%s (baseline peak %.1f MiB; %s)\n", shape.c_str (), points.size (),
+               seed, runs, runs == 1 ? "" : "s", baseline.peak_kib / 1024.0,
+               cold ? "cold: no memory warmed"
+                    : ("memory warmed before each, up to " + std::to_string (warm >> 20) + " MiB").c_str ());
   std::printf ("  %-28s %9s %11s  %s\n", "", "seconds", "peak MiB", "");
-  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Delaunay_triangulation_3", delaunay.seconds, delaunay.peak_kib / 1024.0, delaunay.detail);
-  std::printf ("  %-28s %9.3f %11.1f  %s\n", parallel_name.c_str (), parallel.seconds, parallel.peak_kib / 1024.0, parallel.detail);
-  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Regular_triangulation_3", regular.seconds, regular.peak_kib / 1024.0, regular.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Delaunay_triangulation_3", delaunay.seconds,
+               delaunay.peak_kib / 1024.0, delaunay.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", parallel_name.c_str (), parallel.seconds, parallel.peak_kib / 1024.0,
+               parallel.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "CGAL Regular_triangulation_3", regular.seconds, regular.peak_kib / 1024.0,
+               regular.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap total", wrap.seconds, wrap.peak_kib / 1024.0, wrap.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw W (--raw)", wrap_raw.seconds, wrap_raw.peak_kib / 1024.0,
                wrap_raw.detail);

@@ -99,7 +99,8 @@ sampleSurface (const Mesh& m, std::size_t count, unsigned seed)
   std::vector<double> area (m.triangles.size ());
   for (std::size_t i = 0; i < m.triangles.size (); ++i)
   {
-    const Point3 &a = m.vertices[m.triangles[i][0]], &b = m.vertices[m.triangles[i][1]], &c = m.vertices[m.triangles[i][2]];
+    const Point3 &a = m.vertices[m.triangles[i][0]], &b = m.vertices[m.triangles[i][1]],
+                 &c = m.vertices[m.triangles[i][2]];
     const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     const double x = u[1] * v[2] - u[2] * v[1], y = u[2] * v[0] - u[0] * v[2], z = u[0] * v[1] - u[1] * v[0];
     area[i] = 0.5 * std::sqrt (x * x + y * y + z * z);
@@ -170,7 +171,8 @@ referenceSamples (const std::string& reference, const std::vector<Point3>& input
       const double a = angle (random), b = angle (random);
       if (unit (random) * 1.4 > 1.0 + 0.4 * std::cos (b))
         continue;
-      out.push_back ({(1.0 + 0.4 * std::cos (b)) * std::cos (a), (1.0 + 0.4 * std::cos (b)) * std::sin (a), 0.4 * std::sin (b)});
+      out.push_back (
+          {(1.0 + 0.4 * std::cos (b)) * std::cos (a), (1.0 + 0.4 * std::cos (b)) * std::sin (a), 0.4 * std::sin (b)});
     }
   else
     out = sampleSurface (readMesh (reference), count, 7);
@@ -284,8 +286,11 @@ main (int argc, char** argv)
   std::printf ("{\"triangles\":%zu,\"chamfer\":%.6g,\"hausdorff\":%.6g,\"points_on_output\":%.4f,\"watertight\":%s,"
                "\"nonmanifold_edges\":%zu,\"boundary_edges\":%zu,\"nonmanifold_vertices\":%zu,\"components\":%zu,"
                "\"euler\":%ld,\"genus\":%s}\n",
-               mesh.triangles.size (), chamfer, hausdorff, input.empty () ? 0.0 : double (on_output) / double (input.size ()),
-               watertight ? "true" : "false", nonmanifold_edges, boundary_edges, nonmanifold_vertices, roots.size (), euler,
-               watertight && nonmanifold_vertices == 0 ? std::to_string ((2 * long (roots.size ()) - euler) / 2).c_str () : "null");
+               mesh.triangles.size (), chamfer, hausdorff,
+               input.empty () ? 0.0 : double (on_output) / double (input.size ()), watertight ? "true" : "false",
+               nonmanifold_edges, boundary_edges, nonmanifold_vertices, roots.size (), euler,
+               watertight && nonmanifold_vertices == 0
+                   ? std::to_string ((2 * long (roots.size ()) - euler) / 2).c_str ()
+                   : "null");
   return 0;
 }

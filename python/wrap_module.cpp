@@ -99,9 +99,10 @@ py::dict
 surface (const WrapSurface& w)
 {
   py::dict d;
-  d["triangles"] = matrix<std::int64_t> (w.triangles.empty () ? nullptr : w.triangles[0].data (), w.triangles.size (), 3);
-  d["dangling_edges"] =
-      matrix<std::int64_t> (w.dangling_edges.empty () ? nullptr : w.dangling_edges[0].data (), w.dangling_edges.size (), 2);
+  d["triangles"] =
+      matrix<std::int64_t> (w.triangles.empty () ? nullptr : w.triangles[0].data (), w.triangles.size (), 3);
+  d["dangling_edges"] = matrix<std::int64_t> (w.dangling_edges.empty () ? nullptr : w.dangling_edges[0].data (),
+                                              w.dangling_edges.size (), 2);
   d["isolated_vertices"] = vector<std::int64_t> (w.isolated_vertices);
   return d;
 }
@@ -165,7 +166,10 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
   out["duplicates"] = matrix<std::int64_t> (duplicates.data (), result.duplicates.size (), 2);
   out["statistics"] = statistics (result.statistics);
   if (parameters.keep_complex)
+  {
     out["complex"] = complex (result);
+    out["w"] = surface (result.w);
+  }
   if (!result.filtration.empty ())
     out["filtration"] = result.filtration;
   return out;
@@ -207,7 +211,9 @@ PYBIND11_MODULE (_core, m)
         {
         case Threshold::Kind::none: return std::string ("Threshold()");
         case Threshold::Kind::largest: return "Threshold.largest(" + std::to_string (t.count ()) + ")";
-        default: return std::string ("Threshold.") + kindName (t) + "(" + std::string (py::repr (py::float_ (t.value ()))) + ")";
+        default:
+          return std::string ("Threshold.") + kindName (t) + "(" + std::string (py::repr (py::float_ (t.value ()))) +
+                 ")";
         }
       });
 
@@ -235,7 +241,9 @@ PYBIND11_MODULE (_core, m)
           "surface", [] (const Filtration& f, double delta) { return surface (f.surface (delta)); }, py::arg ("delta"),
           "W(delta): a dict of triangles, dangling_edges and isolated_vertices (point indices).");
 
-  py::enum_<SinkDeletion> (m, "SinkDeletion").value ("front", SinkDeletion::front).value ("global_", SinkDeletion::global);
+  py::enum_<SinkDeletion> (m, "SinkDeletion")
+      .value ("front", SinkDeletion::front)
+      .value ("global_", SinkDeletion::global);
   py::enum_<Output> (m, "Output").value ("surface", Output::surface).value ("raw", Output::raw);
 
   py::class_<WrapParameters> (m, "WrapParameters")

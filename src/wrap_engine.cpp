@@ -188,6 +188,8 @@ WrapEngine::report ()
 {
   const SimplicialComplex& complex = *complex_;
   WrapStatistics& stats = result_.statistics;
+  if (parameters_.keep_complex)
+    result_.w = input_indices_.surface (defaultSurface () ? extractBoundary (complex, *x_) : w_);
   if (parameters_.manifold && !defaultSurface ())
     split_ = splitPinches (complex, *x_, w_);
   if (split_)

@@ -121,12 +121,14 @@ TEST (Classification, FlowRelationIsAcyclic)
             const Tuple x = p.tuple (xi);
             if (std::includes (owner.begin (), owner.end (), x.begin (), x.end ()))
             {
-              ASSERT_EQ (r2.at ({f.dim, f.id}), r2.at ({xi.dim, xi.id})) << "a successor shares its predecessor's sphere";
+              ASSERT_EQ (r2.at ({f.dim, f.id}), r2.at ({xi.dim, xi.id}))
+                  << "a successor shares its predecessor's sphere";
               next[{xi.dim, xi.id}].push_back ({f.dim, f.id}); // confident xi -> successor f
             }
             else
             {
-              ASSERT_GT (r2.at ({xi.dim, xi.id}), r2.at ({f.dim, f.id})) << "flow out of an equivocal simplex must rise";
+              ASSERT_GT (r2.at ({xi.dim, xi.id}), r2.at ({f.dim, f.id}))
+                  << "flow out of an equivocal simplex must rise";
               next[{f.dim, f.id}].push_back ({xi.dim, xi.id});
             }
           }

@@ -136,8 +136,10 @@ c = json.load(open(sys.argv[1])); s = json.load(open(sys.argv[2]))
 assert c["n"] == 301 and c["skipped"] == [300] and c["hidden"] == []
 for k in "0123":
     assert all(x == sorted(x) and len(x) == int(k) + 1 for x in c["X"][k]) and c["X"][k] == sorted(c["X"][k])
-assert len(c["X"]["0"]) == 300 and len(c["W"]["triangles"]) == s["w"]["triangles"] > 0
-assert sum(c["class_counts"]["3"].values()) == s["simplices"]["3"]["centered"] + s["simplices"]["3"]["confident"] + s["simplices"]["3"]["equivocal"]
+assert len(c["X"]["0"]) == 300 and len(c["surface"]["triangles"]) == s["w"]["triangles"] > 0
+assert c["W"]["triangles"] and c["W"]["triangles"] != c["surface"]["triangles"]  # the torus's W seals its tunnel
+tets = s["simplices"]["3"]
+assert sum(c["class_counts"]["3"].values()) == tets["centered"] + tets["confident"] + tets["equivocal"]
 chi = sum((-1) ** int(k) * len(c["X"][k]) for k in "0123")
 assert chi == 1, chi
 t = s["timings"]; assert abs(sum(v for k, v in t.items() if k != "total") - t["total"]) < 1e-6
@@ -150,7 +152,32 @@ for k in "0123":
 assert any(x[-1] is not None for x in f["3"]) and c["deletion"]["deleted"] == 0
 )PY";
   writeText (DIR + "check.py", check);
-  EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()), 0);
+  EXPECT_EQ (std::system (("python3 " + DIR + "check.py " + DIR + "torus.json " + DIR + "torus_stats.json").c_str ()),
+             0);
+}
+
+TEST_F (Cli, ComplexJsonHasThePapersWWhateverTheOutput)
+{
+  std::ostringstream xyz;
+  xyz.precision (17);
+  for (const auto& p : torusSample (400, 3))
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  writeText (DIR + "w_torus.xyz", xyz.str ());
+  for (const std::string output : {"default", "raw"})
+    ASSERT_EQ (runCli (DIR + "w_torus.xyz " + DIR + "w_torus.ply --complex " + DIR + output + ".json" +
+                       (output == "raw" ? " --raw" : ""))
+                   .status,
+               0);
+  // The raw output is W itself; the default surface differs from it (W seals the tunnel).
+  const std::string check = R"PY(
+import json, sys
+d = json.load(open(sys.argv[1])); r = json.load(open(sys.argv[2]))
+assert d["W"] == r["W"] and d["X"] == r["X"]
+assert r["surface"]["triangles"] == r["W"]["triangles"] and r["surface"]["copies"] == []
+assert d["surface"]["triangles"] != d["W"]["triangles"]
+)PY";
+  writeText (DIR + "check_w.py", check);
+  EXPECT_EQ (std::system (("python3 " + DIR + "check_w.py " + DIR + "default.json " + DIR + "raw.json").c_str ()), 0);
 }
 
 /** Every input format, broken in every way a file can be: empty, binary junk, truncated,
@@ -190,19 +217,22 @@ malformedFiles ()
       {"huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
                          "property float z\nend_header\n0 0 0\n"},
       {"no_properties.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 99999999999993\nend_header\n"},
-      {"glued_end_header.ply", "ply\nformat binary_little_endian 1.0\nend_headerelement vertex 99999999999993\nend_header\n"},
+      {"glued_end_header.ply",
+       "ply\nformat binary_little_endian 1.0\nend_headerelement vertex 99999999999993\nend_header\n"},
       {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
       {"empty.pcd", ""},
       {"junk.pcd", junk},
       {"truncated.pcd", pcd + "0 0 0\n"},
       {"blank_header_line.pcd", "\n \n# .PCD v0.7\n" + pcd + "0 0 0\n1 0 0\n0 1 0\n"},
       {"garbage.pcd", pcd + "0 0 0\n1 x 0\n0 1 0\n"},
-      {"fields.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 0\n"},
+      {"fields.pcd",
+       "VERSION 0.7\nFIELDS x y z\nSIZE 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nPOINTS 1\nDATA ascii\n0 0 0\n"},
       {"count.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 3\nHEIGHT 1\nPOINTS 5\nDATA ascii\n"},
       {"huge.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2000000000\nHEIGHT 1\n"
                    "POINTS 2000000000\nDATA binary\n\x01\x02"},
       {"keyword_data.pcd", "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
-                           "POINTS 3\nDATA binary\nCOLUMNS y x z\n" + std::string (40, '0')}, // PCL: y and x swapped
+                           "POINTS 3\nDATA binary\nCOLUMNS y x z\n" +
+                               std::string (40, '0')}, // PCL: y and x swapped
       {"points.las", "1 2 3\n"},
   };
 }
@@ -279,11 +309,13 @@ TEST_F (Cli, SinkDeletionOptions)
   for (const auto& p : torusSample (1000, 2))
     xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   writeText (DIR + "torus1000.xyz", xyz.str ());
-  for (const std::string options : {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3",
-                                   "--delta 0.2 --region sphere:0,0,0,0.7", "--delta 0.2 --region box:-.7,-.7,-.5,.7,.7,.5"})
+  for (const std::string options :
+       {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3",
+        "--delta 0.2 --region sphere:0,0,0,0.7", "--delta 0.2 --region box:-.7,-.7,-.5,.7,.7,.5"})
   {
     SCOPED_TRACE (options);
-    const CliRun run = runCli (DIR + "torus1000.xyz " + DIR + "opened.ply --stats-json " + DIR + "opened.json " + options);
+    const CliRun run =
+        runCli (DIR + "torus1000.xyz " + DIR + "opened.ply --stats-json " + DIR + "opened.json " + options);
     ASSERT_EQ (run.status, 0) << run.err;
     writeText (DIR + "deleted.py", "import json, sys\n"
                                    "d = json.load(open(sys.argv[1]))['deletion']\n"
@@ -310,8 +342,8 @@ TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
   for (const std::string format : {".ply", ".obj", ".vtk"})
   {
     SCOPED_TRACE (format);
-    const CliRun run = runCli (DIR + "torus200.xyz " + DIR + "manifold" + format + " --raw --manifold --stats-json " + DIR +
-                               "manifold.json");
+    const CliRun run = runCli (DIR + "torus200.xyz " + DIR + "manifold" + format + " --raw --manifold --stats-json " +
+                               DIR + "manifold.json");
     ASSERT_EQ (run.status, 0) << run.err;
     pcl::PolygonMesh mesh;
     if (format == ".ply")
@@ -331,10 +363,13 @@ TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
     const SurfaceReport s = describeSurface (triangles);
     EXPECT_TRUE (s.closed_manifold);
     EXPECT_TRUE (s.consistently_oriented);
-    writeText (DIR + "copies.py", "import json, sys\n"
-                                  "m = json.load(open(sys.argv[1]))['manifold']\n"
-                                  "assert m['pinch_edges_split'] > 0 and len(m['copies']) == int(sys.argv[2]) - 200, m\n");
-    EXPECT_EQ (std::system (("python3 " + DIR + "copies.py " + DIR + "manifold.json " + std::to_string (vertices)).c_str ()), 0);
+    writeText (DIR + "copies.py",
+               "import json, sys\n"
+               "m = json.load(open(sys.argv[1]))['manifold']\n"
+               "assert m['pinch_edges_split'] > 0 and len(m['copies']) == int(sys.argv[2]) - 200, m\n");
+    EXPECT_EQ (std::system (
+                   ("python3 " + DIR + "copies.py " + DIR + "manifold.json " + std::to_string (vertices)).c_str ()),
+               0);
   }
 }
 

@@ -24,7 +24,8 @@ struct EIGEN_ALIGN16 Return
 } // namespace scanner
 
 POINT_CLOUD_REGISTER_POINT_STRUCT (scanner::Return,
-                                   (float, x, x) (float, y, y) (float, z, z) (float, range, range) (std::uint16_t, ring, ring))
+                                   (float, x, x) (float, y, y) (float, z, z) (float, range, range) (std::uint16_t, ring,
+                                                                                                    ring))
 
 TEST (PclWrap, CustomPointTypeWithoutPrecompiledInstantiation)
 {

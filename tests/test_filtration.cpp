@@ -141,8 +141,10 @@ sinksInExactOrder (const Pipeline& p, std::vector<ExactKernel::FT>& sizes)
       w.emplace_back (K::Point_3 (p.points[v][0], p.points[v][1], p.points[v][2]), p.weights[v]);
       sink.corners.push_back (p.points[v]);
     }
-    sink.size = s.dim == 0 ? radius (w[0]) : s.dim == 1 ? radius (w[0], w[1]) : s.dim == 2 ? radius (w[0], w[1], w[2])
-                                                                                            : radius (w[0], w[1], w[2], w[3]);
+    sink.size = s.dim == 0   ? radius (w[0])
+                : s.dim == 1 ? radius (w[0], w[1])
+                : s.dim == 2 ? radius (w[0], w[1], w[2])
+                             : radius (w[0], w[1], w[2], w[3]);
     std::sort (sink.corners.begin (), sink.corners.end ());
     sinks.push_back (sink);
   });

@@ -38,7 +38,8 @@ struct Wrapped
 };
 
 Wrapped
-frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0, const std::vector<std::uint8_t>& in_front = {})
+frontWrap (const Pipeline& p, double delta, std::uint64_t order_seed = 0,
+           const std::vector<std::uint8_t>& in_front = {})
 {
   detail::WrapFiltration order;
   detail::orderSinks (p.complex, p.classification, p.points, p.weights, order);

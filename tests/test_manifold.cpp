@@ -66,7 +66,8 @@ expectManifoldSplitOf (const std::vector<Point3>& points, const WrapParameters& 
   for (std::size_t f = 0; f < triangles.size (); ++f)
     if (triangles.in_x[f])
     {
-      std::array<PointIndex, 3> t{triangles.vertices[3 * f], triangles.vertices[3 * f + 1], triangles.vertices[3 * f + 2]};
+      std::array<PointIndex, 3> t{triangles.vertices[3 * f], triangles.vertices[3 * f + 1],
+                                  triangles.vertices[3 * f + 2]};
       std::sort (t.begin (), t.end ());
       if (expected.count (t) && tet_faces.count ({t[0], t[1], t[2]}) == 0)
       {

@@ -34,7 +34,9 @@ runPipeline (const Cloud& cloud, const std::string& name, const std::string& opt
 {
   const std::string in = DIR + name + ".pcd", out = DIR + name + ".ply";
   EXPECT_EQ (pcl::io::savePCDFileBinary (in, cloud), 0);
-  EXPECT_EQ (std::system ((std::string (PCL_WRAP_PIPELINE) + " " + in + " " + out + " " + options + " > /dev/null").c_str ()), 0);
+  EXPECT_EQ (std::system (
+                 (std::string (PCL_WRAP_PIPELINE) + " " + in + " " + out + " " + options + " > /dev/null").c_str ()),
+             0);
   pcl::PolygonMesh mesh;
   EXPECT_GE (pcl::io::loadPLYFile (out, mesh), 0);
   return mesh;
@@ -82,8 +84,9 @@ TEST (Pipeline, OrganisedCloudWithNansThroughOutlierRemoval)
       const float x = (float (c) - 32.f) / 32.f, y = (float (r) - 24.f) / 32.f;
       const bool seen = x * x + y * y < 0.8f && (r * 7 + c * 3) % 11 != 0;
       const bool stray = (r * 31 + c * 17) % 97 == 0;
-      cloud->at (c, r) = !seen ? pcl::PointXYZ (nan, nan, nan)
-                               : pcl::PointXYZ (x, y, (stray ? 1.2f : 2.f) + 0.1f * std::sin (4 * x) * std::cos (3 * y));
+      cloud->at (c, r) = !seen
+                             ? pcl::PointXYZ (nan, nan, nan)
+                             : pcl::PointXYZ (x, y, (stray ? 1.2f : 2.f) + 0.1f * std::sin (4 * x) * std::cos (3 * y));
     }
   cloud->is_dense = false;
   const pcl::PolygonMesh mesh = runPipeline (*cloud, "pipeline_depth", "--outliers 8 1.0");

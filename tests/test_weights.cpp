@@ -106,7 +106,8 @@ TEST (Weights, ScaleMultipliesEveryWeight)
     w *= 2;
   WrapParameters scaled = rawOutput ();
   scaled.weight_scale = 2;
-  EXPECT_EQ (computeWrap (points, weights, scaled).surface.triangles, computeWrap (points, doubled, rawOutput ()).surface.triangles);
+  EXPECT_EQ (computeWrap (points, weights, scaled).surface.triangles,
+             computeWrap (points, doubled, rawOutput ()).surface.triangles);
   EXPECT_THROW (computeWrap (points, std::vector<double> (3, 0.0), rawOutput ()), std::invalid_argument);
 }
 

@@ -107,7 +107,8 @@ TEST (WrapShapes, NoPointsGiveAnEmptyResult)
 {
   const WrapResult r = computeWrap ({}, rawOutput ());
   EXPECT_EQ (r.statistics.triangulation_dimension, -1);
-  EXPECT_TRUE (r.surface.triangles.empty () && r.surface.dangling_edges.empty () && r.surface.isolated_vertices.empty ());
+  EXPECT_TRUE (r.surface.triangles.empty () && r.surface.dangling_edges.empty () &&
+               r.surface.isolated_vertices.empty ());
 }
 
 TEST (WrapShapes, OnePointIsAnIsolatedVertex)
@@ -135,7 +136,8 @@ TEST (WrapShapes, AcuteTriangleStaysObtuseTriangleCollapsesToTwoEdges)
   // Obtuse at point 2: the long edge 0-1 is attached, so the triangle collapses through it.
   const WrapResult obtuse = computeWrap ({{0, 0, 0}, {1, 0, 0}, {0.5, 0.1, 0}}, rawOutput ());
   EXPECT_TRUE (obtuse.surface.triangles.empty ());
-  std::set<std::array<PointIndex, 2>> edges (obtuse.surface.dangling_edges.begin (), obtuse.surface.dangling_edges.end ());
+  std::set<std::array<PointIndex, 2>> edges (obtuse.surface.dangling_edges.begin (),
+                                             obtuse.surface.dangling_edges.end ());
   EXPECT_EQ (edges, (std::set<std::array<PointIndex, 2>>{{0, 2}, {1, 2}}));
 }
 

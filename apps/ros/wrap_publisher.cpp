@@ -120,7 +120,8 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   try
   {
     // Checked against the message's own layout: a malformed message is an error, not a crash.
-    wrap.setWeights (weight_field_.empty () ? std::vector<double> () : pcl_wrap::readFieldValues (input, weight_field_));
+    wrap.setWeights (weight_field_.empty () ? std::vector<double> ()
+                                            : pcl_wrap::readFieldValues (input, weight_field_));
   }
   catch (const std::exception& e)
   {

@@ -35,7 +35,9 @@ checkParameters (const WrapParameters& parameters);
   *            never part of the output
   * \param[in] parameters see WrapParameters
   * \param[in] observer optional, called after every stage
-  * \return the surface W, the complex and statistics, with indices into \a points
+  * \return the surface (by default the default surface, a closed oriented 2-manifold through the
+  *         points; see WrapParameters::output), the complex when asked and statistics, with
+  *         indices into \a points
   * \throws std::invalid_argument when \a weights is neither empty nor one per point, or from
   *         checkParameters()
   */

@@ -16,11 +16,13 @@ namespace pcl_wrap
 
 /** \brief Edelsbrunner's Wrap surface reconstruction as a PCL surface reconstruction stage.
   *
-  * Turns an unorganised cloud, with no normals and no parameters to tune, into the surface W:
-  * the boundary of what is left of the Delaunay complex after collapsing it from the outside in
-  * along the flow of empty spheres. W passes through the points; every polygon indexes the
-  * input cloud (PCL's convention: \c output.cloud is the whole input, \c setIndices selects the
-  * points used). Non-finite points are skipped and duplicates kept once; both are reported.
+  * Turns an unorganised cloud, with no normals and no parameters to tune, into a surface through
+  * the points. The construction is the paper's: the Delaunay complex collapsed from the outside
+  * in along the flow of empty spheres leaves X, whose boundary is W. The default output is the
+  * default surface built on it, a closed, oriented 2-manifold through the points
+  * (docs/surface.md); setOutput (Output::raw) gives W as it is. Every polygon indexes the input
+  * cloud (PCL's convention: \c output.cloud is the whole input, \c setIndices selects the points
+  * used). Non-finite points are skipped and duplicates kept once; both are reported.
   *
   * \code
   * pcl_wrap::Wrap<pcl::PointXYZ> wrap;
@@ -102,8 +104,8 @@ public:
     * \param[in] scale the factor (default 1) */
   void setWeightScale (double scale) { parameters_.weight_scale = scale; }
 
-  /** \brief The result of the last reconstruct(): W, X, classes, with indices into the input
-    * cloud. */
+  /** \brief The result of the last reconstruct(): the surface, X, classes, with indices into the
+    * input cloud. */
   const WrapResult& getResult () const { return result_; }
   /** \brief The statistics of the last reconstruct(), including timings per stage. */
   const WrapStatistics& getStatistics () const { return result_.statistics; }
@@ -111,11 +113,11 @@ public:
 protected:
   std::string getClassName () const override { return "Wrap"; }
 
-  /** \brief Adds W's triangles to \a output, whose cloud is already the input cloud (plus the
+  /** \brief Adds the surface's triangles to \a output, whose cloud is already the input cloud (plus the
     * copies of a manifold split). */
   void performReconstruction (pcl::PolygonMesh& output) override;
 
-  /** \brief Copies the input cloud to \a points and W's triangles to \a polygons. */
+  /** \brief Copies the input cloud to \a points and the surface's triangles to \a polygons. */
   void performReconstruction (pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons) override;
 
 private:

@@ -134,8 +134,8 @@ struct WrapParameters
     * only. */
   Region region;
 
-  /** \brief The surface returned: the clean surface (default) or the paper's W. X, the deletion
-    * and the filtration are the same either way. */
+  /** \brief The surface returned: the default surface or the paper's W. X, the deletion and the
+    * filtration are the same either way. */
   Output output = Output::surface;
 
   /** \brief Raw output only: a closed combinatorial 2-manifold: W's triangles, split where W touches itself

@@ -48,15 +48,17 @@ struct SimplexList
   std::size_t size () const { return classes.size (); }
 };
 
-/** \brief The surface W = Bd X (docs/design.md §5), in point indices. */
+/** \brief A surface in point indices: the output (WrapResult::surface), or the paper's W = Bd X
+  * (docs/design.md §5). */
 struct WrapSurface
 {
-  /** \brief Triangles of X with fewer than two tetrahedra of X behind them, oriented with their
-    * normal pointing away from the tetrahedron behind them (sheets: consistently per sheet). */
+  /** \brief Oriented triangles. The default surface's face away from its inside; W's are the
+    * triangles of X with fewer than two tetrahedra of X behind them, facing away from the one
+    * behind them (sheets: consistently per sheet). */
   std::vector<std::array<PointIndex, 3>> triangles;
-  /** \brief Edges of X with no triangle of X on them, each with its smaller index first. */
+  /** \brief W: the edges of X with no triangle of X on them, each with its smaller index first. */
   std::vector<std::array<PointIndex, 2>> dangling_edges;
-  /** \brief Vertices of X with no edge of X on them. */
+  /** \brief W: the vertices of X with no edge of X on them. */
   std::vector<PointIndex> isolated_vertices;
 };
 
@@ -131,10 +133,10 @@ struct WrapStatistics
   std::size_t pinch_vertices_split = 0;
   std::size_t sheet_triangles_doubled = 0;
 
-  /** \brief The clean surface: tetrahedra moved across it to make it a 2-manifold through the
+  /** \brief The default surface: tetrahedra moved across it to make it a 2-manifold through the
     * points. */
   std::size_t tetrahedra_moved = 0;
-  /** \brief The clean surface: the points are a single layer (a terrain, a scan seen from one
+  /** \brief The default surface: the points are a single layer (a terrain, a scan seen from one
     * side), so the surface is X's boundary as a closed two-sided shell, the points copied per side. */
   bool single_layer = false;
   /** \brief With single_layer: Delaunay triangles and tetrahedra added to tie pieces of the shell
@@ -155,14 +157,18 @@ struct WrapStatistics
 struct WrapResult
 {
   WrapStatistics statistics;
+  /** \brief The output (WrapParameters::output): the default surface, a closed oriented
+    * 2-manifold through the points (docs/surface.md), or the paper's W as it is (Output::raw),
+    * split into a 2-manifold with WrapParameters::manifold. */
   WrapSurface surface;
-  /** \brief Del S by dimension with each simplex's class and membership in X; empty when
-    * WrapParameters::keep_complex is false. */
+  /** \brief With WrapParameters::keep_complex: Del S by dimension with each simplex's class and
+    * membership in X, and the paper's W = Bd X, whatever the output; empty otherwise. */
   std::array<SimplexList, 4> complex;
+  WrapSurface w;
   std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
   std::vector<PointIndex> hidden;    ///< points with an empty power cell
-  /** \brief The points copied to split pinches (the default surface output, or the raw output
-    * with WrapParameters::manifold). Point index n + k (n = the number of input points) in
+  /** \brief The points copied to split the output where it touches itself (the default surface,
+    * or the raw output with WrapParameters::manifold). Point index n + k (n = the number of input points) in
     * surface.triangles is a copy of point copies[k]. */
   std::vector<PointIndex> copies;
   /** \brief With WrapParameters::filtration: X(delta) and W(delta) for any delta. */

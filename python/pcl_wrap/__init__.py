@@ -43,6 +43,8 @@ class WrapResult:
     complex           with keep_complex=True: for k = 0..3 a dict with "vertices" ((s, k+1)
                       point indices), "classes" (indices into SIMPLEX_CLASSES), "in_x" (bool)
                       and, with filtration=True, "values"; otherwise None
+    w                 with keep_complex=True: the paper's W = Bd X whatever the output, a dict
+                      of triangles, dangling_edges and isolated_vertices; otherwise None
     filtration        with filtration=True: a Filtration (sink_sizes, x_size(delta),
                       surface(delta)); otherwise None
     """
@@ -58,6 +60,7 @@ class WrapResult:
         self.isolated_vertices = fields["isolated_vertices"]
         self.statistics = fields["statistics"]
         self.complex = fields.get("complex")
+        self.w = fields.get("w")
         self.filtration = fields.get("filtration")
 
     def __repr__(self):

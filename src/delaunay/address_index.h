@@ -78,7 +78,8 @@ public:
     const std::size_t page = (a - base_) >> shift_;
     const auto first = runs_.begin () + first_run_[page];
     const auto last = runs_.begin () + std::min<std::size_t> (first_run_[page + 1] + 1, runs_.size ());
-    const auto r = std::upper_bound (first, last, a, [] (std::uintptr_t x, const Run& run) { return x < run.begin; }) - 1;
+    const auto r =
+        std::upper_bound (first, last, a, [] (std::uintptr_t x, const Run& run) { return x < run.begin; }) - 1;
     assert (a >= r->begin && a < r->end && (a - r->begin) % STRIDE == 0);
     return numbers_[r->first + (a - r->begin) / STRIDE];
   }

@@ -39,8 +39,8 @@ using LockGridOf = std::conditional_t<IS_PARALLEL<Concurrency>, LockGrid, CGAL::
 // Hidden points are found from the vertex set afterwards, so cells need not store them.
 using RegularVertex = CGAL::Triangulation_vertex_base_with_info_3<
     std::uint32_t, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
-using RegularCell =
-    CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>, CGAL::Discard_hidden_points>;
+using RegularCell = CGAL::Regular_triangulation_cell_base_3<Kernel, CGAL::Triangulation_cell_base_3<Kernel>,
+                                                            CGAL::Discard_hidden_points>;
 template <class Concurrency>
 using Regular = CGAL::Regular_triangulation_3<
     Kernel, CGAL::Triangulation_data_structure_3<RegularVertex, RegularCell, Concurrency>, LockGridOf<Concurrency>>;

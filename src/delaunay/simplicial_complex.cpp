@@ -128,18 +128,19 @@ nameEdges (int d, std::uint32_t num_vertices, const FilledInParallel<std::uint32
     SimplexId next = first_id[a], id = NO_SIMPLEX;
     const Instance* previous = nullptr;
     const auto [own, own_end] = atLowest (a);
-    inMergedOrder (instances.data () + begin[a], instances.data () + begin[a + 1], own, own_end, [&] (const Instance& x) {
-      if (previous == nullptr || x.other != previous->other)
-      {
-        id = next++;
-        edge_vertices[2 * std::size_t (id)] = static_cast<std::uint32_t> (a);
-        edge_vertices[2 * std::size_t (id) + 1] = x.other;
-        edge_tops[id] = 0;
-      }
-      previous = &x;
-      top_edges[x.slot] = id;
-      ++edge_tops[id]; // the bucket's own edge: no other thread counts it
-    });
+    inMergedOrder (instances.data () + begin[a], instances.data () + begin[a + 1], own, own_end,
+                   [&] (const Instance& x) {
+                     if (previous == nullptr || x.other != previous->other)
+                     {
+                       id = next++;
+                       edge_vertices[2 * std::size_t (id)] = static_cast<std::uint32_t> (a);
+                       edge_vertices[2 * std::size_t (id) + 1] = x.other;
+                       edge_tops[id] = 0;
+                     }
+                     previous = &x;
+                     top_edges[x.slot] = id;
+                     ++edge_tops[id]; // the bucket's own edge: no other thread counts it
+                   });
   });
 }
 
@@ -153,8 +154,8 @@ sort3 (std::uint32_t& a, std::uint32_t& b, std::uint32_t& c)
 
 } // namespace
 
-SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices,
-                                      FilledInParallel<std::uint32_t> top, const FilledInParallel<std::uint32_t>& neighbours)
+SimplicialComplex::SimplicialComplex (int dimension, std::uint32_t num_vertices, FilledInParallel<std::uint32_t> top,
+                                      const FilledInParallel<std::uint32_t>& neighbours)
   : dimension_ (dimension)
 {
   if (dimension < -1 || dimension > 3 || (dimension >= 0 && top.size () % (dimension + 1) != 0))

@@ -35,7 +35,8 @@ medianNearestNeighbourDistance (const std::uint32_t* simplices, std::size_t coun
       for (std::size_t j = i + 1; j < k; ++j)
       {
         const Point3 &a = positions[v[i]], &b = positions[v[j]];
-        const double squared = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
+        const double squared =
+            (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
         offer (v[i], squared);
         offer (v[j], squared);
       }

@@ -23,7 +23,10 @@ constexpr std::uint32_t NONE = ~std::uint32_t (0);
 struct Corner
 {
   std::uint32_t vertex, piece, copy;
-  bool operator< (const Corner& o) const { return std::tie (vertex, piece, copy) < std::tie (o.vertex, o.piece, o.copy); }
+  bool operator<(const Corner& o) const
+  {
+    return std::tie (vertex, piece, copy) < std::tie (o.vertex, o.piece, o.copy);
+  }
   bool operator== (const Corner& o) const { return vertex == o.vertex && piece == o.piece && copy == o.copy; }
 };
 
@@ -88,7 +91,8 @@ linkOf (const SimplicialComplex& complex, const std::vector<Point3>& positions, 
         if (j != i && v[j] != u)
           ab[m++] = v[j];
       const Simplex simplex = w == NONE ? complex.facet (3, t, i) : Simplex{3, t};
-      link.push_back ({std::min (ab[0], ab[1]), std::max (ab[0], ab[1]), simplex, longestEdge (complex, positions, simplex)});
+      link.push_back (
+          {std::min (ab[0], ab[1]), std::max (ab[0], ab[1]), simplex, longestEdge (complex, positions, simplex)});
     }
   }
   std::sort (link.begin (), link.end (), [] (const LinkEdge& e, const LinkEdge& f) {
@@ -102,7 +106,8 @@ linkOf (const SimplicialComplex& complex, const std::vector<Point3>& positions, 
   * simplex is as small as can be; with that, the fewest edges, found breadth-first in the order of
   * vertex ids. Empty if there is none. */
 std::vector<Simplex>
-linkPath (const std::vector<LinkEdge>& link, const std::vector<std::uint32_t>& from, const std::vector<std::uint32_t>& to)
+linkPath (const std::vector<LinkEdge>& link, const std::vector<std::uint32_t>& from,
+          const std::vector<std::uint32_t>& to)
 {
   std::vector<std::uint32_t> nodes;
   for (const auto& e : link)
@@ -122,7 +127,8 @@ linkPath (const std::vector<LinkEdge>& link, const std::vector<std::uint32_t>& f
     ends[a] = (in (from, nodes[a]) ? 1 : 0) | (in (to, nodes[a]) ? 2 : 0);
   std::vector<std::size_t> order (link.size ());
   std::iota (order.begin (), order.end (), std::size_t (0));
-  std::stable_sort (order.begin (), order.end (), [&] (std::size_t i, std::size_t j) { return link[i].size < link[j].size; });
+  std::stable_sort (order.begin (), order.end (),
+                    [&] (std::size_t i, std::size_t j) { return link[i].size < link[j].size; });
   double bottleneck = -1.0;
   for (std::size_t i : order)
   {
@@ -214,8 +220,8 @@ longestSide (const std::vector<Point3>& positions, const std::vector<TriangleAt>
 } // namespace
 
 std::vector<Simplex>
-shellTies (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const std::vector<std::uint8_t>& edge_in_k,
-           const ManifoldSplit& split)
+shellTies (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions,
+           const std::vector<std::uint8_t>& edge_in_k, const ManifoldSplit& split)
 {
   const SimplicialComplex& complex = tetrahedra.complex ();
   const std::uint32_t nv = complex.numVertices ();
@@ -301,7 +307,8 @@ shellTies (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, c
     const double longest = std::max (longestSide (positions, mine), longestSide (positions, theirs));
     link.erase (std::remove_if (link.begin (), link.end (),
                                 [&] (const LinkEdge& e) {
-                                  return e.size > longest || meetsElsewhere (complex, e.simplex, edge_in_k, mine, theirs);
+                                  return e.size > longest ||
+                                         meetsElsewhere (complex, e.simplex, edge_in_k, mine, theirs);
                                 }),
                 link.end ());
     const std::vector<Simplex> path =

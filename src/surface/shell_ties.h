@@ -24,7 +24,7 @@ namespace pcl_wrap::detail
   * \param[in] positions per vertex
   * \param[in] edge_in_k per edge of the complex, whether it is in the complex that was split */
 std::vector<Simplex>
-shellTies (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const std::vector<std::uint8_t>& edge_in_k,
-           const ManifoldSplit& split);
+shellTies (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions,
+           const std::vector<std::uint8_t>& edge_in_k, const ManifoldSplit& split);
 
 } // namespace pcl_wrap::detail

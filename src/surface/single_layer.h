@@ -45,9 +45,10 @@ struct TwoSidedShell
   * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
   * edge, or the triangles around the vertex, whose largest is as small as can be), none longer
   * than the triangles they join nor meeting the shell along another edge; a round is kept only
-  * if it leaves fewer pieces and no new handle. The ties are faces of the triangulation. Pieces left meeting only along an edge are
-  * joined there by taking the other diagonal of the quadrilaterals around it: the only triangles
-  * of the shell that are not Delaunay faces.
+  * if it leaves fewer pieces and no new handle (shellTies()). The ties are faces of the
+  * triangulation. Pieces left meeting only along an edge are joined there by taking the other
+  * diagonal of the quadrilaterals around it (joinAlongSharedEdges()): the only triangles of the
+  * shell that are not Delaunay faces.
   * \param[in] tetrahedra attached to their complex
   * \param[in] positions per vertex */
 TwoSidedShell

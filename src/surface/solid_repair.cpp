@@ -143,7 +143,8 @@ private:
     * s.star) holds, joined across facets that contain its vertex and every vertex \a through
     * requires. */
   template <class Keep, class Through = bool (*) (std::uint32_t, int)>
-  Parts split (StarScratch& s, const Keep& keep, const Through& through = [] (std::uint32_t, int) { return true; }) const
+  Parts split (
+      StarScratch& s, const Keep& keep, const Through& through = [] (std::uint32_t, int) { return true; }) const
   {
     const std::size_t m = s.star.size ();
     UnionFind& sets = s.parts;

@@ -50,7 +50,9 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
   // At most one neighbour across each of a triangle's three edges: a flat array, not a list each.
   constexpr std::uint32_t NONE = ~std::uint32_t (0);
   std::vector<std::array<std::uint32_t, 3>> neighbours (sheet.size (), {NONE, NONE, NONE});
-  const auto link = [&] (std::uint32_t i, std::uint32_t j) { *std::find (neighbours[i].begin (), neighbours[i].end (), NONE) = j; };
+  const auto link = [&] (std::uint32_t i, std::uint32_t j) {
+    *std::find (neighbours[i].begin (), neighbours[i].end (), NONE) = j;
+  };
   for (std::size_t a = 0; a < edge_uses.size ();)
   {
     std::size_t b = a;

@@ -34,7 +34,9 @@ public:
     for (int k = 0; k <= std::min (2, complex_.dimension ()); ++k)
     {
       on_front_[k].resize (complex_.size (k));
-      parallelForEach (complex_.size (k), [&] (std::size_t s) { on_front_[k][s] = onFront ({k, static_cast<SimplexId> (s)}); });
+      parallelForEach (complex_.size (k), [&] (std::size_t s) {
+        on_front_[k][s] = onFront ({k, static_cast<SimplexId> (s)});
+      });
     }
   }
 

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap/manifold_split.h"
 
+#include "util/union_find.h"
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -35,23 +37,6 @@ cornerOf (const Face& f, std::uint32_t vertex)
 {
   return f.v[0] == vertex ? 0 : f.v[1] == vertex ? 1 : 2;
 }
-
-/** Union-find over face corners (3 per face). */
-class Corners
-{
-public:
-  explicit Corners (std::size_t n) : parent_ (n) { std::iota (parent_.begin (), parent_.end (), 0u); }
-  std::uint32_t find (std::uint32_t a)
-  {
-    while (parent_[a] != a)
-      a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-  void join (std::uint32_t a, std::uint32_t b) { parent_[find (a)] = find (b); }
-
-private:
-  std::vector<std::uint32_t> parent_;
-};
 
 /** The sign of the permutation p of (0, 1, 2, 3). */
 bool
@@ -216,11 +201,11 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
       uses.emplace_back (edgeKey (faces[f].v[i], faces[f].v[(i + 1) % 3]), f);
   std::sort (uses.begin (), uses.end ());
 
-  Corners corners (3 * faces.size ());
+  UnionFind corners (3 * faces.size ()); // three per face: glued corners are one vertex
   const auto glueAlong = [&] (std::uint32_t a, std::uint32_t b) {
     return [&, a, b] (std::uint32_t f, std::uint32_t g) {
       for (std::uint32_t v : {a, b})
-        corners.join (3 * f + cornerOf (faces[f], v), 3 * g + cornerOf (faces[g], v));
+        corners.attach (3 * f + cornerOf (faces[f], v), 3 * g + cornerOf (faces[g], v));
     };
   };
   const auto choiceOf = [&] (std::size_t p) { return p < choice.size () ? choice[p] : 0u; };

@@ -22,7 +22,8 @@ bool
 Retraction::collapsible (Simplex v) const
 {
   const Simplex tau = classification_.predecessor[v.dim][v.id];
-  if (tau.id == NO_SIMPLEX || !y_.contains (v) || !y_.contains (tau) || classification_.of (v) != SimplexClass::equivocal)
+  if (tau.id == NO_SIMPLEX || !y_.contains (v) || !y_.contains (tau) ||
+      classification_.of (v) != SimplexClass::equivocal)
     return false;
   // v is free with tau its largest coface iff every coface of v in Y is a face of tau. The k - l
   // faces of tau one dimension above v are in Y (Y is a complex, tau is in it), and any other

@@ -49,7 +49,8 @@ private:
     * is read first, which spares most of the predecessor array a pass over every simplex. */
   bool hasPredecessor (Simplex v) const
   {
-    return classification_.of (v) == SimplexClass::equivocal && classification_.predecessor[v.dim][v.id].id != NO_SIMPLEX;
+    return classification_.of (v) == SimplexClass::equivocal &&
+           classification_.predecessor[v.dim][v.id].id != NO_SIMPLEX;
   }
   /** Removes every xi with v <= xi <= tau (v is tau's lowest successor), queueing on \a work
     * the facets that stay. CONCURRENT and \a removed as for remove(). */

@@ -21,8 +21,8 @@ namespace pcl_wrap::detail
   * Returns how many were present but not principal. */
 template <class KeepGoing, class Before>
 std::size_t
-deleteSinksGlobally (Retraction& retraction, const WrapFiltration& order, const KeepGoing& keep_going, const Before& before,
-                     std::size_t& deleted, std::uint64_t order_seed = 0)
+deleteSinksGlobally (Retraction& retraction, const WrapFiltration& order, const KeepGoing& keep_going,
+                     const Before& before, std::size_t& deleted, std::uint64_t order_seed = 0)
 {
   std::size_t not_principal = 0;
   for (std::size_t j = 0; j < order.sinks.size () && keep_going (j, order.sink_sizes[j]); ++j)

@@ -200,7 +200,8 @@ orderSinks (const SimplicialComplex& complex, const Classification& classificati
   // earlier one iff the highest earlier upper bound reaches it.
   std::vector<std::size_t> by_lower (sinks.size ());
   std::iota (by_lower.begin (), by_lower.end (), 0);
-  std::sort (by_lower.begin (), by_lower.end (), [&] (std::size_t a, std::size_t b) { return bounds[a].inf () < bounds[b].inf (); });
+  std::sort (by_lower.begin (), by_lower.end (),
+             [&] (std::size_t a, std::size_t b) { return bounds[a].inf () < bounds[b].inf (); });
   std::vector<std::size_t> overlapping;
   double reach = -std::numeric_limits<double>::infinity ();
   for (std::size_t r = 0; r < by_lower.size (); ++r)
@@ -255,7 +256,8 @@ orderSinks (const SimplicialComplex& complex, const Classification& classificati
       break;
     const double middle = (bounds[i].inf () + bounds[i].sup ()) / 2;
     filtration.sinks.push_back (sinks[i]);
-    filtration.sink_sizes.push_back (filtration.sink_sizes.empty () ? middle : std::min (middle, filtration.sink_sizes.back ()));
+    filtration.sink_sizes.push_back (filtration.sink_sizes.empty () ? middle
+                                                                    : std::min (middle, filtration.sink_sizes.back ()));
   }
 }
 

@@ -186,6 +186,15 @@ class Options(unittest.TestCase):
             self.assertEqual(list(counts), [stats[c] for c in pcl_wrap.SIMPLEX_CLASSES])
             self.assertEqual(int(simplices["in_x"].sum()), basic.statistics["x_simplices"][k])
 
+    def test_w_is_the_papers_whatever_the_output(self):
+        points = torus(2000)
+        raw = pcl_wrap.wrap(points, output="raw", keep_complex=True)
+        default = pcl_wrap.wrap(points, keep_complex=True)
+        self.assertIsNone(pcl_wrap.wrap(points).w)
+        np.testing.assert_array_equal(raw.w["triangles"], raw.triangles)
+        self.assertEqual({tuple(t) for t in default.w["triangles"]}, {tuple(t) for t in raw.triangles})
+        self.assertNotEqual({tuple(t) for t in default.triangles}, {tuple(t) for t in raw.triangles})
+
     def test_filtration_gives_the_basic_and_a_tighter_wrap(self):
         points = torus(3000)
         result = pcl_wrap.wrap(points, output="raw", filtration=True)

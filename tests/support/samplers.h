@@ -51,7 +51,8 @@ torusSample (std::size_t n, unsigned seed, double major = 1.0, double minor = 0.
   for (auto& q : p)
   {
     const double a = angle (random), b = angle (random);
-    q = {(major + minor * std::cos (b)) * std::cos (a), (major + minor * std::cos (b)) * std::sin (a), minor * std::sin (b)};
+    q = {(major + minor * std::cos (b)) * std::cos (a), (major + minor * std::cos (b)) * std::sin (a),
+         minor * std::sin (b)};
   }
   return p;
 }

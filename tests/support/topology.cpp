@@ -46,7 +46,8 @@ rankOfTriangleBoundary (const std::vector<Tuple>& complex)
   {
     if (s.size () != 3)
       continue;
-    std::vector<std::uint32_t> column = {edge_row.at ({s[0], s[1]}), edge_row.at ({s[0], s[2]}), edge_row.at ({s[1], s[2]})};
+    std::vector<std::uint32_t> column = {edge_row.at ({s[0], s[1]}), edge_row.at ({s[0], s[2]}),
+                                         edge_row.at ({s[1], s[2]})};
     std::sort (column.begin (), column.end ());
     while (!column.empty ())
     {

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+// The guards that stand before PCL's PCD and PLY readers: each throws FileError on a file the
+// reader would mishandle.
+#include <string>
+
+namespace pcl_wrap::apps
+{
+
+/** \brief PCL's PCD reader trusts the header and corrupts memory on a malformed one (found by
+  * fuzzing): the header checked strictly, and the data size it declares against the file.
+  * \throws FileError where the file is malformed */
+void
+checkPcdFile (const std::string& path);
+
+/** \brief PCL's PLY reader allocates what the header declares before reading the data (2e9
+  * vertices cost 23 GB): the declared elements checked to fit in the file.
+  * \throws FileError where the file is malformed */
+void
+checkPlyFile (const std::string& path);
+
+} // namespace pcl_wrap::apps
