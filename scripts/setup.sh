@@ -9,6 +9,7 @@ PACKAGES=(
   libpcl-dev libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libeigen3-dev libboost-dev
   libgtest-dev mpi-default-dev
   clang libclang-rt-dev llvm   # the sanitizer and fuzzing build (libFuzzer, ASan, UBSan)
+  clang-format-14 git          # the format check of changed lines
   libcgal-demo   # sample data: the Stanford bunny, kitten, fandisk
   # The ROS1 node and its test against a real roscore (Debian's ROS packages)
   libroscpp-dev libnodeletlib-dev libnodeletlib-tools libsensor-msgs-dev libpcl-conversions-dev
