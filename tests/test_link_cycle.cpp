@@ -87,13 +87,14 @@ TEST (LinkCycle, NotOneCycle)
 TEST (LinkCycle, AgreesWithAGraphSearchOnRandomEdgeSets)
 {
   std::mt19937 random (3);
+  const auto below = [&] (std::uint32_t k) { return static_cast<std::uint32_t> (random () % k); };
   std::size_t cycles = 0;
   for (int trial = 0; trial < 20000; ++trial)
   {
     // Distinct edges on a few vertices, often a cycle with an edge more, less or changed.
-    const std::uint32_t n = 3 + random () % 8;
+    const std::uint32_t n = 3 + below (8);
     std::vector<Edge> edges = cycle (n, 0, 1, random);
-    switch (random () % 4)
+    switch (below (4))
     {
     case 0:
       break;
@@ -101,11 +102,11 @@ TEST (LinkCycle, AgreesWithAGraphSearchOnRandomEdgeSets)
       edges.pop_back ();
       break;
     case 2:
-      edges.push_back ({n, random () % n});
-      edges.push_back ({n, random () % n});
+      edges.push_back ({n, below (n)});
+      edges.push_back ({n, below (n)});
       break;
     default:
-      edges.back ()[random () % 2] = n + random () % 3;
+      edges.back ()[below (2)] = n + below (3);
     }
     std::set<std::pair<std::uint32_t, std::uint32_t>> distinct;
     bool simple = true;
