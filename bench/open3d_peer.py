@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""usage: open3d_peer.py open3d_ball_pivoting|open3d_alpha_shape POINTS.xyz [--mesh OUT.obj]
+"""usage: open3d_peer.py open3d_ball_pivoting|open3d_alpha_shape|open3d_poisson POINTS.xyz [--mesh OUT.obj]
 
 Open3D's reconstructions (Debian's python3-open3d), timed from the points in memory, as one JSON
 line like bench_peers'. Ball pivoting needs normals (estimated from 20 neighbours, timed apart
 and included); its radii are 1.5, 3 and 6 times the median nearest-neighbour distance. The alpha
-shape's alpha is 2 times that distance (as PCL ConcaveHull's here)."""
+shape's alpha is 2 times that distance (as PCL ConcaveHull's here). Poisson reconstruction (depth 8)
+takes the same normals, oriented consistently along a tangent-plane graph of 20 neighbours."""
 import json
 import resource
 import sys
@@ -30,6 +31,12 @@ def main():
         radii = [1.5 * spacing, 3 * spacing, 6 * spacing]
         mesh = o3d.geometry.TriangleMesh.create_from_point_cloud_ball_pivoting(cloud, o3d.utility.DoubleVector(radii))
         note = "normals k 20; radii %.4g %.4g %.4g" % tuple(radii)
+    elif method == "open3d_poisson":
+        cloud.estimate_normals(o3d.geometry.KDTreeSearchParamKNN(20))
+        cloud.orient_normals_consistent_tangent_plane(20)
+        normal_seconds = time.perf_counter() - start
+        mesh, _ = o3d.geometry.TriangleMesh.create_from_point_cloud_poisson(cloud, depth=8)
+        note = "normals k 20, oriented on a tangent-plane graph; depth 8"
     elif method == "open3d_alpha_shape":
         alpha = 2 * spacing
         mesh = o3d.geometry.TriangleMesh.create_from_point_cloud_alpha_shape(cloud, alpha)

@@ -18,7 +18,7 @@ PACKAGES=(
   # Pictures: pcl_viewer and an X server without a display
   pcl-tools xvfb xauth xdotool python3-pil
   # The benchmark's peers from Python (Open3D's ball pivoting and alpha shape) and its plots
-  python3-open3d python3-matplotlib
+  python3-open3d python3-matplotlib python3-scipy
   # The Python package
   python3-dev pybind11-dev python3-numpy
 )

@@ -1,0 +1,147 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""usage: bench/corpus.py OUT_DIR [--quick]
+
+Writes a corpus of point clouds whose right answer is known, one .xyz file per case, and
+OUT_DIR/manifest.json: per case its class, the expected number of components and total genus of
+the surface, and the median spacing of its points. The classes are what a surface through the
+points must get right: inner voids (a hollow ball keeps its inner shell), lost parts (coarse
+objects side by side), holes (a plate with five bores), bridges (linked rings, thin cylinders a
+few spacings apart), separate objects, noise (0.25, 0.5 and 1 times the spacing) and degenerate
+data. Fixed seeds: the same files every time. --quick leaves out the largest clouds.
+"""
+import json
+import sys
+
+import numpy as np
+
+rng = np.random.default_rng(2026)
+
+
+def unit(v):
+    return v / np.linalg.norm(v, axis=1)[:, None]
+
+
+def sphere(n, r=1.0, c=(0, 0, 0)):
+    return np.asarray(c, float) + r * unit(rng.normal(size=(n, 3)))
+
+
+def torus(n, R=1.0, r=0.3, c=(0, 0, 0), axis=2):
+    """Uniform by area: the angle around the tube is drawn with density (R + r cos v)."""
+    u = rng.uniform(0, 2 * np.pi, n)
+    v = np.empty(0)
+    while v.size < n:
+        cand = rng.uniform(0, 2 * np.pi, 2 * n)
+        keep = rng.uniform(0, R + r, 2 * n) < R + r * np.cos(cand)
+        v = np.r_[v, cand[keep]]
+    v = v[:n]
+    p = np.c_[(R + r * np.cos(v)) * np.cos(u), (R + r * np.cos(v)) * np.sin(u), r * np.sin(v)]
+    p = np.roll(p, axis - 2, axis=1)
+    return np.asarray(c, float) + p
+
+
+def capped_cylinder(n, r, h, c=(0, 0, 0)):
+    """A closed cylinder along z: side and both caps, uniform by area."""
+    side, cap = 2 * np.pi * r * h, np.pi * r * r
+    k = rng.choice(3, size=n, p=np.array([side, cap, cap]) / (side + 2 * cap))
+    t = rng.uniform(0, 2 * np.pi, n)
+    rad = np.where(k == 0, r, r * np.sqrt(rng.uniform(0, 1, n)))
+    z = np.where(k == 0, rng.uniform(-h / 2, h / 2, n), np.where(k == 1, -h / 2, h / 2))
+    return np.asarray(c, float) + np.c_[rad * np.cos(t), rad * np.sin(t), z]
+
+
+def plate_with_holes(n, size=(4.0, 2.0, 0.3), holes=5, hole_r=0.22):
+    """A box plate with `holes` round bores through its thickness, in a row: genus `holes`."""
+    a, b, t = size
+    centres = [(-a / 2 + a * (i + 1) / (holes + 1), 0.0) for i in range(holes)]
+    faces = 2 * a * b + 2 * (a + b) * t
+    bores = holes * 2 * np.pi * hole_r * t
+    out = []
+    while sum(len(o) for o in out) < n:
+        m = 4 * n
+        if rng.uniform() < faces / (faces + bores):
+            # a point on the box's surface, kept unless it falls in a bore
+            x, y, z = rng.uniform(-a / 2, a / 2, m), rng.uniform(-b / 2, b / 2, m), rng.uniform(-t / 2, t / 2, m)
+            f = rng.choice(6, size=m, p=np.array([a * b, a * b, a * t, a * t, b * t, b * t]) / faces)
+            z = np.where(f == 0, t / 2, np.where(f == 1, -t / 2, z))
+            y = np.where(f == 2, b / 2, np.where(f == 3, -b / 2, y))
+            x = np.where(f == 4, a / 2, np.where(f == 5, -a / 2, x))
+            p = np.c_[x, y, z]
+            inside = np.zeros(m, bool)
+            for cx, cy in centres:
+                inside |= (f < 2) & ((x - cx) ** 2 + (y - cy) ** 2 < hole_r ** 2)
+            out.append(p[~inside][: m // 8])
+        else:
+            cx, cy = centres[rng.integers(holes)]
+            s = rng.uniform(0, 2 * np.pi, m // 8)
+            out.append(np.c_[cx + hole_r * np.cos(s), cy + hole_r * np.sin(s), rng.uniform(-t / 2, t / 2, m // 8)])
+    p = np.concatenate(out)
+    return p[rng.permutation(len(p))[:n]]
+
+
+def median_spacing(p):
+    from scipy.spatial import cKDTree
+
+    d, _ = cKDTree(p).query(p, k=2)
+    return float(np.median(d[:, 1]))
+
+
+def noisy(p, sigma):
+    return p + sigma * rng.normal(size=p.shape)
+
+
+def cases(quick):
+    c = []
+    # inner voids: nested spheres keep both shells; a solid ball's sample has none
+    c.append(("voids", "hollow_ball", np.r_[sphere(6000), sphere(2500, 0.6)], 2, 0))
+    c.append(("voids", "three_nested", np.r_[sphere(6000), sphere(3000, 0.7), sphere(1200, 0.4)], 3, 0))
+    # lost parts: coarse objects side by side
+    c.append(("parts", "two_coarse_tori", np.r_[torus(400, 1, 0.35), torus(400, 1, 0.35, c=(3.0, 0, 0))], 2, 2))
+    c.append(("parts", "coarse_sphere_and_torus", np.r_[sphere(300), torus(500, 1, 0.35, c=(2.6, 0, 0))], 2, 1))
+    # holes and tunnels wider than a few spacings stay open
+    c.append(("holes", "plate_five_holes", plate_with_holes(12000), 1, 5))
+    c.append(("holes", "thick_torus", torus(3000, 1, 0.6), 1, 1))
+    # bridges: linked rings, thin cylinders a few spacings apart
+    rings = np.r_[torus(2500, 1, 0.15), torus(2500, 1, 0.15, c=(1.2, 0, 0), axis=1),
+                  torus(2500, 1, 0.15, c=(2.4, 0, 0))]  # a chain: each linked with the next
+    c.append(("bridges", "three_linked_rings", rings, 3, 3))
+    # radius 0.15, spacing about 0.016: gaps of 2.5 spacings
+    bundle = np.concatenate([capped_cylinder(2500, 0.15, 3.0, c=(0.34 * i, 0, 0)) for i in range(4)])
+    c.append(("bridges", "four_thin_cylinders", bundle, 4, 0))
+    # separate objects stay separate
+    for gap in (0.5, 2.0):
+        c.append(("separate", "two_spheres_gap_%g" % gap, np.r_[sphere(5000), sphere(5000, c=(2 + gap, 0, 0))], 2, 0))
+    c.append(("separate", "three_spheres_row", np.r_[sphere(3000), sphere(3000, c=(2.5, 0, 0)),
+                                                        sphere(3000, c=(5.0, 0, 0))], 3, 0))
+    c.append(("separate", "sphere_beside_torus", np.r_[sphere(4000), torus(5000, 1, 0.35, c=(3.0, 0, 0))], 2, 1))
+    # noise of 0.25, 0.5 and 1 times the spacing
+    for n in (10000,) if quick else (10000, 100000):
+        for shape, genus in (("sphere", 0), ("torus", 1)):
+            p = sphere(n) if shape == "sphere" else torus(n, 1, 0.4)
+            s = median_spacing(p)
+            for k in (0.25, 0.5, 1.0):
+                c.append(("noise", "%s_%dk_noise_%g" % (shape, n // 1000, k), noisy(p, k * s), 1, genus))
+    # degenerate data: a far outlier stays out of the surface's shape
+    c.append(("degenerate", "sphere_and_far_outlier", np.r_[sphere(3000), [[1e3, 0, 0]]], 1, 0))
+    return c
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    quick = "--quick" in sys.argv[2:]
+    import os
+
+    os.makedirs(out, exist_ok=True)
+    manifest = []
+    for klass, name, points, components, genus in cases(quick):
+        np.savetxt("%s/%s.xyz" % (out, name), points, fmt="%.9g")
+        manifest.append({"class": klass, "name": name, "points": len(points), "components": components,
+                         "genus": genus, "spacing": median_spacing(points)})
+    with open("%s/manifest.json" % out, "w") as f:
+        json.dump(manifest, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
