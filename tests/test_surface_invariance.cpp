@@ -82,6 +82,27 @@ TEST (SurfaceInvariance, EveryDegenerateFamilyGivesAClosedOrientedManifold)
   }
 }
 
+TEST (SurfaceInvariance, PointsOnACurveGiveTheCurve)
+{
+  // Nearly collinear: Del S has tetrahedra, all slivers; X, the paper's answer, is the polyline.
+  std::mt19937 random (5);
+  std::normal_distribution<double> noise (0.0, 1e-12);
+  std::vector<Point3> points;
+  for (int i = 0; i < 1000; ++i)
+  {
+    const double t = std::uniform_real_distribution<double> (0.0, 1.0) (random);
+    points.push_back ({t, 2 * t + noise (random), 3 * t + noise (random)});
+  }
+  const WrapResult raw = computeWrap (points, rawOutput ());
+  ASSERT_EQ (raw.statistics.triangulation_dimension, 3);
+  ASSERT_EQ (raw.statistics.x_simplices[2], 0u);
+  const WrapResult r = computeWrap (points);
+  EXPECT_TRUE (r.surface.triangles.empty ());
+  EXPECT_EQ (r.surface.dangling_edges, raw.surface.dangling_edges);
+  EXPECT_EQ (r.surface.dangling_edges.size (), 999u);
+  EXPECT_TRUE (r.copies.empty ());
+}
+
 TEST (SurfaceInvariance, DoesNotDependOnTheOrderOfThePoints)
 {
   for (const auto& [name, points] : families ())
