@@ -105,8 +105,7 @@ TEST (LinkCycle, AgreesWithAGraphSearchOnRandomEdgeSets)
       edges.push_back ({n, below (n)});
       edges.push_back ({n, below (n)});
       break;
-    default:
-      edges.back ()[below (2)] = n + below (3);
+    default: edges.back ()[below (2)] = n + below (3);
     }
     std::set<std::pair<std::uint32_t, std::uint32_t>> distinct;
     bool simple = true;
