@@ -41,7 +41,7 @@ WrapEngine::run ()
 bool
 WrapEngine::defaultSurface () const
 {
-  return parameters_.output == Output::surface && dimension_ == 3 && !x_is_a_curve_;
+  return parameters_.output == Output::surface && dimension_ == 3;
 }
 
 void
@@ -171,14 +171,6 @@ WrapEngine::deleteSinks ()
 void
 WrapEngine::extractSurface ()
 {
-  if (defaultSurface () && x_->size (2) == 0)
-  {
-    // X has no triangle: the points lie on a curve (or apart), and no surface passes through
-    // them. The output is what the paper makes of them, W (docs/surface.md).
-    surface_.reset ();
-    tetrahedra_ = {};
-    x_is_a_curve_ = true;
-  }
   if (!defaultSurface ())
   {
     w_ = extractBoundary (*complex_, *x_);

@@ -95,7 +95,6 @@ private:
   InputPoints input_;
   Triangulation triangulation_;
   int dimension_ = -1;
-  bool x_is_a_curve_ = false; // X has no triangle: the default surface is W
   std::vector<Point3> vertex_positions_;
   std::vector<double> vertex_weights_;
   InputIndices input_indices_;

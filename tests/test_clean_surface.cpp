@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <random>
 #include <set>
 
@@ -127,6 +128,53 @@ TEST (CleanSurface, TerrainGivesATwoSidedShellThroughItsPoints)
   const SurfaceReport split = describeSurface (trianglesOf (computeWrap (terrain, raw)));
   EXPECT_GT (split.components, 10u);
   EXPECT_LE (s.components, 3u);
+}
+
+/** \a points scaled by \a s, their axes turned (x, y, z) -> (y, z, x) \a turns times, then moved by \a to. */
+std::vector<Point3>
+placed (std::vector<Point3> points, double s, int turns, const Point3& to)
+{
+  for (auto& p : points)
+  {
+    for (int k = 0; k < turns; ++k)
+      p = {p[1], p[2], p[0]};
+    p = {s * p[0] + to[0], s * p[1] + to[1], s * p[2] + to[2]};
+  }
+  return points;
+}
+
+std::vector<Point3>
+together (std::initializer_list<std::vector<Point3>> parts)
+{
+  std::vector<Point3> all;
+  for (const auto& part : parts)
+    all.insert (all.end (), part.begin (), part.end ());
+  return all;
+}
+
+TEST (CleanSurface, SeparateObjectsAndNestedShellsStaySeparate)
+{
+  // X, which is contractible, reaches across the gaps between them; the surface does not.
+  {
+    SCOPED_TRACE ("two spheres half a radius apart");
+    expectCleanSurface (together ({sphereSample (5000, 1), placed (sphereSample (5000, 2), 1, 0, {2.5, 0, 0})}), 2, 0);
+  }
+  {
+    SCOPED_TRACE ("a sphere beside a torus");
+    expectCleanSurface (together ({sphereSample (4000, 3), placed (torusSample (6000, 4, 1.0, 0.35), 1, 0, {3, 0, 0})}),
+                        2, 1);
+  }
+  {
+    SCOPED_TRACE ("a hollow ball: the inner sphere bounds a void");
+    expectCleanSurface (together ({sphereSample (6000, 5), placed (sphereSample (2500, 6), 0.6, 0, {0, 0, 0})}), 2, 0);
+  }
+  {
+    SCOPED_TRACE ("three rings in a chain, each through the next");
+    expectCleanSurface (together ({torusSample (4000, 7, 1.0, 0.15),
+                                   placed (torusSample (4000, 8, 1.0, 0.15), 1, 1, {1.2, 0, 0}),
+                                   placed (torusSample (4000, 9, 1.0, 0.15), 1, 0, {2.4, 0, 0})}),
+                        3, 3);
+  }
 }
 
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)

@@ -127,7 +127,7 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
     for (const auto& link : surfaceLinks (p.complex, given))
       before += !link.empty () && !isOneCycle (link);
 
-    const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, labels);
+    const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, p.points, labels);
 
     EXPECT_TRUE (std::is_sorted (repair.pinched.begin (), repair.pinched.end ()));
     EXPECT_TRUE (std::adjacent_find (repair.pinched.begin (), repair.pinched.end ()) == repair.pinched.end ());
@@ -183,7 +183,7 @@ TEST (SolidRepair, JoinsAPartCutOffTheSolidThroughX)
   ASSERT_GT (cut, 100u);
   ASSERT_GE (solidParts (p.complex, labels.inside), 2u);
 
-  const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, labels);
+  const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, p.points, labels);
 
   EXPECT_EQ (solidParts (p.complex, labels.inside), 1u);
   const SurfaceReport surface = describeSurface (repairedSurface (p.tetrahedra, labels.inside, repair.pinched));

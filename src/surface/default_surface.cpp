@@ -6,11 +6,29 @@
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_repair.h"
 
+#include <algorithm>
 #include <memory>
 #include <utility>
 
 namespace pcl_wrap::detail
 {
+
+namespace
+{
+
+/** How many of the \a nv points the surface \a out passes through. */
+std::size_t
+pointsOn (const DefaultSurface::Output& out, std::uint32_t nv)
+{
+  std::vector<std::uint8_t> on (nv, 0);
+  const auto& triangles = out.split ? out.split->triangles : out.w.triangles;
+  for (const auto& t : triangles)
+    for (std::uint32_t v : t)
+      on[out.split ? out.split->original (v, nv) : v] = 1;
+  return static_cast<std::size_t> (std::count (on.begin (), on.end (), std::uint8_t (1)));
+}
+
+} // namespace
 
 DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
@@ -45,7 +63,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   labelling_.reset ();
   clock.stageDone ("labelling");
   const bool single_layer = !labels.hull && isSingleLayer (complex, x, labels.inside);
-  const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (adjacency_, x, labels);
+  const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (adjacency_, x, positions, labels);
   stats.tetrahedra_moved = repair.flipped;
   clock.stageDone ("repair");
 
@@ -79,6 +97,13 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   }
   if (pinched_solid)
     out.split = splitPinches (complex, *pinched_solid, out.w);
+  if (x.size (2) == 0 && pointsOn (out, complex.numVertices ()) < complex.numVertices ())
+  {
+    // X has no triangle: the paper's W is a curve through every point (nearly collinear points,
+    // a wire). A solid that leaves points off its surface is slivers around that curve; the
+    // output is W itself.
+    return {extractBoundary (complex, x), std::nullopt};
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "util/union_find.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <numeric>
@@ -16,6 +17,80 @@ namespace pcl_wrap::detail
 {
 namespace
 {
+
+/** A part with fewer vertices is a fragment: too few points to show an object of their own. The
+  * labelling cuts such fragments off at thin necks (horn tips, finger tips: 4 to 24 vertices on
+  * the development models); the smallest separate object of bench/corpus.py has 300. */
+constexpr std::size_t FRAGMENT_VERTICES = 32;
+
+/** A join may close a gap up to this many times the spacing at its ends: one the sampling does not
+  * resolve. Parts cut apart by the labelling lie within 1.1 spacings of each other; separate
+  * objects, as close as two spacings, are apart. */
+constexpr double UNRESOLVED_GAP = 1.5;
+
+double
+distance (const Point3& a, const Point3& b)
+{
+  return std::sqrt ((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/** The points a join would tie together, and how far apart they are. */
+class JoinGaps
+{
+public:
+  JoinGaps (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const std::vector<std::uint32_t>& part)
+    : tetrahedra_ (tetrahedra), positions_ (positions), part_ (part)
+  {}
+
+  /** Is the gap between part \a p and part \a q along the tetrahedra of \a chain no wider than
+    * UNRESOLVED_GAP spacings: some vertex of p on the chain that near some vertex of q on it, in
+    * units of the larger of their spacings (the shortest Delaunay edge at each)? */
+  bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
+  {
+    std::vector<std::uint32_t> on_p, on_q;
+    for (std::uint32_t t : chain)
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t v = tetrahedra_.vertex (t, i);
+        if (isOn (v, p))
+          on_p.push_back (v);
+        if (isOn (v, q))
+          on_q.push_back (v);
+      }
+    for (std::uint32_t a : on_p)
+      for (std::uint32_t b : on_q)
+        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::max (spacing (a), spacing (b)))
+          return true;
+    return false;
+  }
+
+private:
+  /** Is \a v a vertex of a tetrahedron of part \a p? */
+  bool isOn (std::uint32_t v, std::uint32_t p)
+  {
+    tetrahedra_.gatherStar (v, star_);
+    for (std::uint32_t t : star_.tetrahedra ())
+      if (part_[t] == p)
+        return true;
+    return false;
+  }
+
+  double spacing (std::uint32_t v)
+  {
+    tetrahedra_.gatherStar (v, star_);
+    double shortest = std::numeric_limits<double>::infinity ();
+    for (std::uint32_t t : star_.tetrahedra ())
+      for (int i = 0; i < 4; ++i)
+        if (tetrahedra_.vertex (t, i) != v)
+          shortest = std::min (shortest, distance (positions_[v], positions_[tetrahedra_.vertex (t, i)]));
+    return shortest;
+  }
+
+  const Tetrahedra& tetrahedra_;
+  const std::vector<Point3>& positions_;
+  const std::vector<std::uint32_t>& part_;
+  Star star_;
+};
 
 /** Is tetrahedron \a t in X, or one of its triangles? */
 bool
@@ -68,8 +143,8 @@ solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& insid
 }
 
 std::vector<std::uint32_t>
-joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels,
-                   std::vector<std::uint8_t>& moved_flags)
+joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+                   SolidLabels& labels, std::vector<std::uint8_t>& moved_flags)
 {
   constexpr std::uint32_t NONE = SolidParts::NO_PART;
   const std::size_t n = tetrahedra.size ();
@@ -88,12 +163,29 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabel
   for (std::uint32_t t = 0; t < n; ++t)
     if (part[t] != NONE)
       members[part[t]].push_back (t);
+  JoinGaps gaps (tetrahedra, positions, part);
+  std::vector<std::uint8_t> on_part (tetrahedra.complex ().numVertices (), 0);
+  std::vector<std::uint32_t> chain;
   std::vector<double> cost (n, std::numeric_limits<double>::infinity ());
   std::vector<std::uint32_t> from (n, NONE), reached;
   using Entry = std::pair<double, std::uint32_t>;
   for (std::uint32_t p : order)
   {
     const std::uint32_t mine = joined.find (p);
+    std::vector<std::uint32_t> corners;
+    for (std::uint32_t t : members[p])
+      corners.insert (corners.end (), tetrahedra.vertices (t), tetrahedra.vertices (t) + 4);
+    std::sort (corners.begin (), corners.end ());
+    corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
+    const bool fragment = corners.size () < FRAGMENT_VERTICES;
+    // A part of its own may only close a gap at its surface: its search stays among the
+    // tetrahedra that touch it.
+    for (std::uint32_t v : corners)
+      on_part[v] = !fragment;
+    const auto touches = [&] (std::uint32_t t) {
+      const std::uint32_t* v = tetrahedra.vertices (t);
+      return on_part[v[0]] || on_part[v[1]] || on_part[v[2]] || on_part[v[3]];
+    };
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
     for (std::uint32_t t : members[p])
     {
@@ -115,7 +207,18 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabel
           continue;
         if (labels.inside[b])
         {
-          if (part[b] != NONE && joined.find (part[b]) != mine)
+          if (part[b] == NONE || joined.find (part[b]) == mine)
+            continue;
+          // A fragment joins the part it reaches first; a part of its own only one it was cut
+          // from, across a gap the sampling does not resolve.
+          chain.assign (1, b);
+          for (std::uint32_t t = a;; t = from[t])
+          {
+            chain.push_back (t);
+            if (labels.inside[t])
+              break;
+          }
+          if (fragment || gaps.unresolved (chain, p, part[b]))
           {
             goal = b;
             from[b] = a;
@@ -123,7 +226,7 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabel
           continue;
         }
         const double through = c + labels.margin[b];
-        if (!inX (tetrahedra, x, b) || through >= cost[b])
+        if (!inX (tetrahedra, x, b) || through >= cost[b] || (!fragment && !touches (b)))
           continue;
         if (cost[b] == std::numeric_limits<double>::infinity ())
           reached.push_back (b);
@@ -148,6 +251,8 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabel
       from[t] = NONE;
     }
     reached.clear ();
+    for (std::uint32_t v : corners)
+      on_part[v] = 0;
   }
   return moved;
 }

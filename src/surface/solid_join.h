@@ -27,16 +27,19 @@ struct SolidParts
 SolidParts
 solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
 
-/** \brief Joins the connected parts of the solid that X's tetrahedra join: from each part but the
+/** \brief Joins the parts of the solid that the labelling cut apart: from each part but the
   * largest, smallest first, the cheapest path (by summed margins) of outside tetrahedra of X to
-  * another part moves inside. X is contractible, so a part cut off the solid by the labelling (a
-  * thin leg, a horn) is tied to the rest through X; separate objects are not, as X joins them
-  * through lower-dimensional simplices only. A tetrahedron of X is one of X's tetrahedra or has a
-  * triangle of X (a sheet, where the retraction thinned a part of the solid to nothing).
+  * another part moves inside. A tetrahedron of X is one of X's tetrahedra or has a triangle of X (a
+  * sheet, where the retraction thinned a part of the solid to nothing). X is contractible: it ties
+  * a part cut off at a neck (a horn, a leg) to the rest, but it also reaches across the gaps
+  * between separate objects. So a path ends only at a part it reaches across a gap the sampling
+  * does not resolve (its ends within 1.5 spacings), except from a fragment of fewer than 32
+  * vertices, too small to be an object of its own, which joins the first part it reaches.
+  * \param[in] positions per vertex
   * \param[in,out] moved per tetrahedron, set for those it moves
   * \return the tetrahedra it moved inside, in the order it moved them */
 std::vector<std::uint32_t>
-joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels,
-                   std::vector<std::uint8_t>& moved);
+joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+                   SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
 } // namespace pcl_wrap::detail

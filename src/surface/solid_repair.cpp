@@ -38,7 +38,7 @@ public:
       unmended_ (complex_.numVertices (), 0)
   {}
 
-  SolidRepair run (const Subcomplex& x)
+  SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
   {
     SolidRepair done;
     // Most vertices need nothing: find the others on all threads, then mend them in order.
@@ -48,7 +48,7 @@ public:
       if (needs[v])
         work.push_back (v); // popped from the back: the lowest first
     mend (work, done);
-    const std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, labels_, flipped_);
+    const std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : joined)
@@ -323,11 +323,12 @@ private:
 } // namespace
 
 SolidRepair
-repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels)
+repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+             SolidLabels& labels)
 {
   if (tetrahedra.complex ().dimension () != 3)
     return {};
-  return Repairer (tetrahedra, labels).run (x);
+  return Repairer (tetrahedra, labels).run (x, positions);
 }
 
 } // namespace pcl_wrap::detail

@@ -31,8 +31,10 @@ struct SolidRepair
   * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX()).
   * Each tetrahedron changes side at most once in the mending, so the repair ends; a pinch it
   * cannot mend is left to the pinch split (splitSolidPinches()).
-  * \param[in] tetrahedra attached to their complex */
+  * \param[in] tetrahedra attached to their complex
+  * \param[in] positions per vertex */
 SolidRepair
-repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels);
+repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+             SolidLabels& labels);
 
 } // namespace pcl_wrap::detail
