@@ -6,9 +6,10 @@ Writes a corpus of point clouds whose right answer is known, one .xyz file per c
 OUT_DIR/manifest.json: per case its class, the expected number of components and total genus of
 the surface, and the median spacing of its points. The classes are what a surface through the
 points must get right: inner voids (a hollow ball keeps its inner shell), lost parts (coarse
-objects side by side), holes (a plate with five bores), bridges (linked rings, thin cylinders a
-few spacings apart), separate objects, noise (0.25, 0.5 and 1 times the spacing) and degenerate
-data. Fixed seeds: the same files every time. --quick leaves out the largest clouds.
+objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup),
+bridges (linked rings, thin cylinders a few spacings apart), separate objects, noise (0.25, 0.5
+and 1 times the spacing, and uneven density) and degenerate data (outliers). Fixed seeds: the
+same files every time. --quick leaves out the largest clouds.
 """
 import json
 import sys
@@ -79,6 +80,44 @@ def plate_with_holes(n, size=(4.0, 2.0, 0.3), holes=5, hole_r=0.22):
     return p[rng.permutation(len(p))[:n]]
 
 
+def area_sample(parts, n):
+    """n points over surface pieces [(area, sampler(k) -> (k, 3))], in proportion to their areas."""
+    areas = np.array([a for a, _ in parts])
+    counts = rng.multinomial(n, areas / areas.sum())
+    return np.concatenate([f(k) for (_, f), k in zip(parts, counts) if k > 0])
+
+
+def disk(k, r0, r1, z):
+    t, rad = rng.uniform(0, 2 * np.pi, k), np.sqrt(rng.uniform(r0 * r0, r1 * r1, k))
+    return np.c_[rad * np.cos(t), rad * np.sin(t), np.full(k, z)]
+
+
+def tube(k, r, z0, z1):
+    t = rng.uniform(0, 2 * np.pi, k)
+    return np.c_[r * np.cos(t), r * np.sin(t), rng.uniform(z0, z1, k)]
+
+
+def cup(n, wall, height=2.0, r=1.0):
+    """An open cup of radius r with walls and bottom `wall` thick: a solid of genus 0."""
+    q = r - wall
+    return area_sample([(2 * np.pi * r * height, lambda k: tube(k, r, 0, height)),
+                        (np.pi * r * r, lambda k: disk(k, 0, r, 0)),
+                        (2 * np.pi * q * (height - wall), lambda k: tube(k, q, wall, height)),
+                        (np.pi * q * q, lambda k: disk(k, 0, q, wall)),
+                        (np.pi * (r * r - q * q), lambda k: disk(k, q, r, height))], n)
+
+
+def mug(n):
+    """A thick cup with a handle: a torus in the xz plane whose ends sink into the cup's wall (the
+    tube reaches 0.9 from the axis, the wall is 0.85 to 1): its points inside the wall and the
+    wall's inside the tube left out. Genus 1."""
+    body = cup(int(0.8 * n), 0.15)
+    body = body[~(((np.hypot(body[:, 0] - 1.45, body[:, 2] - 1.0) - 0.45) ** 2 + body[:, 1] ** 2 < 0.1 ** 2))]
+    handle = torus(n - len(body), 0.45, 0.1, c=(1.45, 0, 1.0), axis=1)
+    handle = handle[np.hypot(handle[:, 0], handle[:, 1]) > 1.0]
+    return np.r_[body, handle]
+
+
 def median_spacing(p):
     from scipy.spatial import cKDTree
 
@@ -114,6 +153,11 @@ def cases(quick):
     c.append(("separate", "three_spheres_row", np.r_[sphere(3000), sphere(3000, c=(2.5, 0, 0)),
                                                         sphere(3000, c=(5.0, 0, 0))], 3, 0))
     c.append(("separate", "sphere_beside_torus", np.r_[sphere(4000), torus(5000, 1, 0.35, c=(3.0, 0, 0))], 2, 1))
+    c.append(("holes", "mug", mug(15000), 1, 1))
+    c.append(("holes", "thin_walled_cup", cup(15000, 0.06), 1, 0))
+    # uneven density: one half of a sphere sampled ten times as densely as the other
+    s = sphere(20000)
+    c.append(("noise", "sphere_uneven_density", np.r_[s[s[:, 0] > 0], s[s[:, 0] <= 0][::10]], 1, 0))
     # noise of 0.25, 0.5 and 1 times the spacing
     for n in (10000,) if quick else (10000, 100000):
         for shape, genus in (("sphere", 0), ("torus", 1)):
@@ -123,6 +167,7 @@ def cases(quick):
                 c.append(("noise", "%s_%dk_noise_%g" % (shape, n // 1000, k), noisy(p, k * s), 1, genus))
     # degenerate data: a far outlier stays out of the surface's shape
     c.append(("degenerate", "sphere_and_far_outlier", np.r_[sphere(3000), [[1e3, 0, 0]]], 1, 0))
+    c.append(("degenerate", "sphere_and_five_outliers", np.r_[sphere(5000), 3 * unit(rng.normal(size=(5, 3)))], 1, 0))
     return c
 
 
