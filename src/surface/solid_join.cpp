@@ -43,7 +43,7 @@ public:
   {}
 
   /** Is the gap between part \a p and part \a q along the tetrahedra of \a chain no wider than
-    * UNRESOLVED_GAP spacings: some vertex of p on the chain that near some vertex of q on it, in
+    * UNRESOLVED_GAP spacings: some vertex of p on the chain as near some vertex of q on it, in
     * units of the larger of their spacings (the shortest Delaunay edge at each)? */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
