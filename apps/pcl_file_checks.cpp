@@ -18,12 +18,6 @@ namespace pcl_wrap::apps
 namespace
 {
 
-[[noreturn]] void
-fail (const std::string& path, const std::string& problem)
-{
-  throw FileError (path + ": " + problem);
-}
-
 /** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:
   * every token of the data from \a start on must be a number ("nan" and "inf" written out are). */
 template <class Fail>
@@ -71,7 +65,7 @@ dataReadsAsHeader (std::ifstream& in)
 void
 checkPcdFile (const std::string& path)
 {
-  const auto bad = [&] (const std::string& what) { fail (path, "malformed PCD file: " + what); };
+  const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PCD file: " + what); };
   std::ifstream in (path, std::ios::binary);
   std::vector<std::vector<std::string>> lines; // keyword and values, comments skipped
   std::string line;
@@ -165,7 +159,7 @@ checkPcdFile (const std::string& path)
 void
 checkPlyFile (const std::string& path)
 {
-  const auto bad = [&] (const std::string& what) { fail (path, "malformed PLY file: " + what); };
+  const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); };
   std::ifstream in (path, std::ios::binary);
   std::string line, format;
   static const std::map<std::string, unsigned> SIZES = {

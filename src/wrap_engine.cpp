@@ -8,7 +8,6 @@
 #include "wrap/retraction.h"
 #include "wrap/sink_deletion.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>

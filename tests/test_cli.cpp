@@ -61,6 +61,17 @@ writeText (const std::string& path, const std::string& text)
   std::ofstream (path) << text;
 }
 
+/** \a points as the lines "x y z" of a .xyz file, to the last bit. */
+std::string
+xyzText (const std::vector<Point3>& points)
+{
+  std::ostringstream xyz;
+  xyz.precision (17);
+  for (const auto& p : points)
+    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  return xyz.str ();
+}
+
 class Cli : public ::testing::Test
 {
 protected:
@@ -119,13 +130,8 @@ TEST_F (Cli, EveryInputFormatGivesTheSameSurfaceInEveryOutputFormat)
 
 TEST_F (Cli, WritesComplexAndStatisticsJson)
 {
-  const auto points = torusSample (300, 2);
-  std::ostringstream xyz;
-  xyz.precision (17);
-  for (const auto& p : points)
-    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  xyz << "nan 0 0\n"; // a data line: index 300, skipped
-  writeText (DIR + "torus.xyz", xyz.str ());
+  // A last data line, index 300, to skip.
+  writeText (DIR + "torus.xyz", xyzText (torusSample (300, 2)) + "nan 0 0\n");
   const CliRun run = runCli (DIR + "torus.xyz " + DIR + "torus.ply --complex " + DIR + "torus.json --stats-json " +
                           DIR + "torus_stats.json --stats");
   ASSERT_EQ (run.status, 0) << run.err;
@@ -158,11 +164,7 @@ assert any(x[-1] is not None for x in f["3"]) and c["deletion"]["deleted"] == 0
 
 TEST_F (Cli, ComplexJsonHasThePapersWWhateverTheOutput)
 {
-  std::ostringstream xyz;
-  xyz.precision (17);
-  for (const auto& p : torusSample (400, 3))
-    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  writeText (DIR + "w_torus.xyz", xyz.str ());
+  writeText (DIR + "w_torus.xyz", xyzText (torusSample (400, 3)));
   for (const std::string output : {"default", "raw"})
     ASSERT_EQ (runCli (DIR + "w_torus.xyz " + DIR + "w_torus.ply --complex " + DIR + output + ".json" +
                        (output == "raw" ? " --raw" : ""))
@@ -304,11 +306,7 @@ TEST_F (Cli, WeightsFromXyzColumnOrPcdField)
 
 TEST_F (Cli, SinkDeletionOptions)
 {
-  std::ostringstream xyz;
-  xyz.precision (17);
-  for (const auto& p : torusSample (1000, 2))
-    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  writeText (DIR + "torus1000.xyz", xyz.str ());
+  writeText (DIR + "torus1000.xyz", xyzText (torusSample (1000, 2)));
   for (const std::string options :
        {"--radius 0.45", "--delta 0.2 --mode front", "--radius-rel 4 --mode global", "--sinks 3",
         "--delta 0.2 --region sphere:0,0,0,0.7", "--delta 0.2 --region box:-.7,-.7,-.5,.7,.7,.5"})
@@ -333,12 +331,8 @@ TEST_F (Cli, SinkDeletionOptions)
 
 TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
 {
-  std::ostringstream xyz;
-  xyz.precision (17);
   const auto torus = torusSample (200, 1); // sealed, with pinch edges
-  for (const auto& p : torus)
-    xyz << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  writeText (DIR + "torus200.xyz", xyz.str ());
+  writeText (DIR + "torus200.xyz", xyzText (torus));
   for (const std::string format : {".ply", ".obj", ".vtk"})
   {
     SCOPED_TRACE (format);

@@ -6,29 +6,11 @@
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_repair.h"
 
-#include <algorithm>
 #include <memory>
 #include <utility>
 
 namespace pcl_wrap::detail
 {
-
-namespace
-{
-
-/** How many of the \a nv points the surface \a out passes through. */
-std::size_t
-pointsOn (const DefaultSurface::Output& out, std::uint32_t nv)
-{
-  std::vector<std::uint8_t> on (nv, 0);
-  const auto& triangles = out.split ? out.split->triangles : out.w.triangles;
-  for (const auto& t : triangles)
-    for (std::uint32_t v : t)
-      on[out.split ? out.split->original (v, nv) : v] = 1;
-  return static_cast<std::size_t> (std::count (on.begin (), on.end (), std::uint8_t (1)));
-}
-
-} // namespace
 
 DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
@@ -82,7 +64,9 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
       out.w = extractBoundary (complex, *pinched_solid);
     }
   }
-  const std::size_t on_solid = single_layer ? verticesOn (out.w.triangles) : 0;
+  // The points on the solid's surface, as its boundary before any split has them.
+  const bool x_is_a_curve = x.size (2) == 0;
+  const std::size_t on_solid = single_layer || x_is_a_curve ? verticesOn (out.w.triangles) : 0;
   if (single_layer && on_solid < complex.numVertices ())
   {
     // The labelled solid is not Wrap's and leaves points off its surface: the points are one
@@ -95,15 +79,15 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
       return {std::move (shell.w), std::move (shell.split)};
     }
   }
-  if (pinched_solid)
-    out.split = splitPinches (complex, *pinched_solid, out.w);
-  if (x.size (2) == 0 && pointsOn (out, complex.numVertices ()) < complex.numVertices ())
+  if (x_is_a_curve && on_solid < complex.numVertices ())
   {
     // X has no triangle: the paper's W is a curve through every point (nearly collinear points,
     // a wire). A solid that leaves points off its surface is slivers around that curve; the
     // output is W itself.
     return {extractBoundary (complex, x), std::nullopt};
   }
+  if (pinched_solid)
+    out.split = splitPinches (complex, *pinched_solid, out.w);
   return out;
 }
 

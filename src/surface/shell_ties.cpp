@@ -3,6 +3,7 @@
 #include "surface/shell_ties.h"
 
 #include "surface/shell_pieces.h"
+#include "util/distance.h"
 #include "util/union_find.h"
 
 #include <algorithm>
@@ -42,12 +43,6 @@ struct TriangleAt
   std::uint32_t u, piece, x, y;
   bool operator< (const TriangleAt& o) const { return std::tie (u, piece, x, y) < std::tie (o.u, o.piece, o.x, o.y); }
 };
-
-double
-squaredDistance (const Point3& p, const Point3& q)
-{
-  return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
-}
 
 /** The squared length of the longest edge of \a s. */
 double

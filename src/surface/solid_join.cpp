@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/solid_join.h"
 
+#include "util/distance.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 
@@ -28,12 +29,6 @@ constexpr std::size_t FRAGMENT_VERTICES = 32;
   * objects, as close as two spacings, are apart. */
 constexpr double UNRESOLVED_GAP = 1.5;
 
-double
-distance (const Point3& a, const Point3& b)
-{
-  return std::sqrt ((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
 /** The points a join would tie together, and how far apart they are. */
 class JoinGaps
 {
@@ -47,45 +42,39 @@ public:
     * units of the larger of their spacings (the shortest Delaunay edge at each)? */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
-    std::vector<std::uint32_t> on_p, on_q;
+    std::vector<std::uint32_t> corners;
     for (std::uint32_t t : chain)
-      for (int i = 0; i < 4; ++i)
+      corners.insert (corners.end (), tetrahedra_.vertices (t), tetrahedra_.vertices (t) + 4);
+    std::sort (corners.begin (), corners.end ());
+    corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
+    std::vector<std::pair<std::uint32_t, double>> on_p, on_q; // (vertex, its spacing)
+    for (std::uint32_t v : corners)
+    {
+      // One look at v's star: whether it is on p or q, and its shortest Delaunay edge.
+      tetrahedra_.gatherStar (v, star_);
+      bool in_p = false, in_q = false;
+      double spacing = std::numeric_limits<double>::infinity ();
+      for (std::uint32_t t : star_.tetrahedra ())
       {
-        const std::uint32_t v = tetrahedra_.vertex (t, i);
-        if (isOn (v, p))
-          on_p.push_back (v);
-        if (isOn (v, q))
-          on_q.push_back (v);
+        in_p = in_p || part_[t] == p;
+        in_q = in_q || part_[t] == q;
+        for (int i = 0; i < 4; ++i)
+          if (tetrahedra_.vertex (t, i) != v)
+            spacing = std::min (spacing, distance (positions_[v], positions_[tetrahedra_.vertex (t, i)]));
       }
-    for (std::uint32_t a : on_p)
-      for (std::uint32_t b : on_q)
-        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::max (spacing (a), spacing (b)))
+      if (in_p)
+        on_p.emplace_back (v, spacing);
+      if (in_q)
+        on_q.emplace_back (v, spacing);
+    }
+    for (const auto& [a, spacing_a] : on_p)
+      for (const auto& [b, spacing_b] : on_q)
+        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::max (spacing_a, spacing_b))
           return true;
     return false;
   }
 
 private:
-  /** Is \a v a vertex of a tetrahedron of part \a p? */
-  bool isOn (std::uint32_t v, std::uint32_t p)
-  {
-    tetrahedra_.gatherStar (v, star_);
-    for (std::uint32_t t : star_.tetrahedra ())
-      if (part_[t] == p)
-        return true;
-    return false;
-  }
-
-  double spacing (std::uint32_t v)
-  {
-    tetrahedra_.gatherStar (v, star_);
-    double shortest = std::numeric_limits<double>::infinity ();
-    for (std::uint32_t t : star_.tetrahedra ())
-      for (int i = 0; i < 4; ++i)
-        if (tetrahedra_.vertex (t, i) != v)
-          shortest = std::min (shortest, distance (positions_[v], positions_[tetrahedra_.vertex (t, i)]));
-    return shortest;
-  }
-
   const Tetrahedra& tetrahedra_;
   const std::vector<Point3>& positions_;
   const std::vector<std::uint32_t>& part_;
