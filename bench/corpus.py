@@ -52,32 +52,32 @@ def capped_cylinder(n, r, h, c=(0, 0, 0)):
 
 
 def plate_with_holes(n, size=(4.0, 2.0, 0.3), holes=5, hole_r=0.22):
-    """A box plate with `holes` round bores through its thickness, in a row: genus `holes`."""
+    """A box plate with `holes` round bores through its thickness, in a row: genus `holes`. Its
+    faces outside the bores and the bores' walls are sampled uniformly by area."""
     a, b, t = size
     centres = [(-a / 2 + a * (i + 1) / (holes + 1), 0.0) for i in range(holes)]
-    faces = 2 * a * b + 2 * (a + b) * t
-    bores = holes * 2 * np.pi * hole_r * t
-    out = []
-    while sum(len(o) for o in out) < n:
-        m = 4 * n
-        if rng.uniform() < faces / (faces + bores):
-            # a point on the box's surface, kept unless it falls in a bore
+
+    def box_faces(k):
+        out = []
+        while sum(len(o) for o in out) < k:
+            m = 2 * k
             x, y, z = rng.uniform(-a / 2, a / 2, m), rng.uniform(-b / 2, b / 2, m), rng.uniform(-t / 2, t / 2, m)
-            f = rng.choice(6, size=m, p=np.array([a * b, a * b, a * t, a * t, b * t, b * t]) / faces)
+            f = rng.choice(6, size=m, p=np.array([a * b, a * b, a * t, a * t, b * t, b * t]) / (2 * a * b + 2 * (a + b) * t))
             z = np.where(f == 0, t / 2, np.where(f == 1, -t / 2, z))
             y = np.where(f == 2, b / 2, np.where(f == 3, -b / 2, y))
             x = np.where(f == 4, a / 2, np.where(f == 5, -a / 2, x))
-            p = np.c_[x, y, z]
-            inside = np.zeros(m, bool)
+            in_bore = np.zeros(m, bool)
             for cx, cy in centres:
-                inside |= (f < 2) & ((x - cx) ** 2 + (y - cy) ** 2 < hole_r ** 2)
-            out.append(p[~inside][: m // 8])
-        else:
-            cx, cy = centres[rng.integers(holes)]
-            s = rng.uniform(0, 2 * np.pi, m // 8)
-            out.append(np.c_[cx + hole_r * np.cos(s), cy + hole_r * np.sin(s), rng.uniform(-t / 2, t / 2, m // 8)])
-    p = np.concatenate(out)
-    return p[rng.permutation(len(p))[:n]]
+                in_bore |= (f < 2) & ((x - cx) ** 2 + (y - cy) ** 2 < hole_r ** 2)
+            out.append(np.c_[x, y, z][~in_bore])
+        return np.concatenate(out)[:k]
+
+    def bore_walls(k):
+        which = rng.integers(holes, size=k)
+        return tube(k, hole_r, -t / 2, t / 2) + np.c_[np.array(centres)[which], np.zeros(k)]
+
+    faces = 2 * (a * b - holes * np.pi * hole_r ** 2) + 2 * (a + b) * t
+    return area_sample([(faces, box_faces), (holes * 2 * np.pi * hole_r * t, bore_walls)], n)
 
 
 def area_sample(parts, n):
