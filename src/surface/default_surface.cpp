@@ -5,12 +5,40 @@
 #include "surface/single_layer.h"
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_repair.h"
+#include "util/parallel_for_each.h"
 
+#include <atomic>
 #include <memory>
 #include <utility>
 
 namespace pcl_wrap::detail
 {
+namespace
+{
+
+/** The number of vertices on the surface of the tetrahedra flagged in \a inside, on all threads. */
+std::size_t
+verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
+{
+  const std::size_t n = tetrahedra.complex ().numVertices ();
+  std::unique_ptr<std::atomic<std::uint8_t>[]> on (new std::atomic<std::uint8_t>[n]());
+  parallelForEach (inside.size (), [&] (std::size_t t) {
+    const auto id = static_cast<std::uint32_t> (t);
+    for (int i = 0; inside[t] && i < 4; ++i)
+    {
+      const std::uint32_t u = tetrahedra.neighbour (id, i);
+      if (u == OUTSIDE_HULL || !inside[u])
+        for (int j = 1; j < 4; ++j)
+          on[tetrahedra.vertex (id, (i + j) & 3)].store (1, std::memory_order_relaxed);
+    }
+  });
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < n; ++v)
+    count += on[v].load (std::memory_order_relaxed);
+  return count;
+}
+
+} // namespace
 
 DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
@@ -45,7 +73,16 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   labelling_.reset ();
   clock.stageDone ("labelling");
   const bool single_layer = !labels.hull && isSingleLayer (complex, x, labels.inside);
-  const SolidRepair repair = labels.hull ? SolidRepair{} : repairSolid (adjacency_, x, positions, labels);
+  // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
+  // the votes between their small spheres say nothing: the solid is X, whose boundary is the
+  // volume's outer surface (the paper's W), and the points inside stay inside.
+  const bool volume = !labels.hull && !single_layer && x.size (3) > 0 &&
+                      2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ();
+  if (volume)
+    parallelForEach (labels.inside.size (), [&] (std::size_t t) {
+      labels.inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
+    });
+  const SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
   clock.stageDone ("repair");
 

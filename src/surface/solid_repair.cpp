@@ -33,10 +33,24 @@ struct StarScratch
 class Repairer
 {
 public:
-  Repairer (const Tetrahedra& tetrahedra, SolidLabels& labels)
-    : tetrahedra_ (tetrahedra), complex_ (tetrahedra.complex ()), labels_ (labels), flipped_ (tetrahedra.size (), 0),
+  Repairer (const Tetrahedra& tetrahedra, SolidLabels& labels, bool keep_buried)
+    : tetrahedra_ (tetrahedra),
+      complex_ (tetrahedra.complex ()),
+      labels_ (labels),
+      flipped_ (tetrahedra.size (), 0),
       unmended_ (complex_.numVertices (), 0)
-  {}
+  {
+    if (!keep_buried)
+      return;
+    // The vertices buried from the start stay inside; one buried by a move is brought back.
+    stays_buried_.assign (complex_.numVertices (), 1);
+    for (std::uint32_t t = 0; t < labels_.inside.size (); ++t)
+      for (int i = 0; labels_.inside[t] && i < 4; ++i)
+        if (!inside (tetrahedra_.neighbour (t, i)))
+          for (int j = 0; j < 4; ++j)
+            if (j != i)
+              stays_buried_[tetrahedra_.vertex (t, j)] = 0;
+  }
 
   SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
   {
@@ -288,26 +302,44 @@ private:
         return members (s, parts, p);
       return {};
     }
-    if (parts.count[0] == 0 || parts.count[1] == 0)
+    if ((parts.count[0] == 0 && (stays_buried_.empty () || !stays_buried_[v])) || parts.count[1] == 0)
     {
-      // Buried or floating: move the weakest tetrahedron of the star that touches the other side.
+      // Buried or floating: move the weakest tetrahedron of the star that touches the other side;
+      // in a volume, when none does (a point on a fin of X), the weakest such pair of a star
+      // tetrahedron and its neighbour.
       const bool buried = parts.count[0] == 0;
-      std::uint32_t best = NONE;
-      for (std::uint32_t t : s.star.tetrahedra ())
-      {
-        if (flipped_[t])
-          continue;
-        bool touches = false;
-        for (int i = 0; i < 4 && !touches; ++i)
+      const auto touches = [&] (std::uint32_t t) {
+        for (int i = 0; i < 4; ++i)
         {
           const std::uint32_t u = tetrahedra_.neighbour (t, i);
-          touches = buried ? !inside (u) : inside (u);
+          if (buried ? !inside (u) : inside (u))
+            return true;
         }
-        if (touches && (best == NONE || labels_.margin[t] < labels_.margin[best]))
+        return false;
+      };
+      std::uint32_t best = NONE;
+      for (std::uint32_t t : s.star.tetrahedra ())
+        if (!flipped_[t] && touches (t) && (best == NONE || labels_.margin[t] < labels_.margin[best]))
           best = t;
-      }
-      if (best != NONE)
-        return {best};
+      if (best != NONE || stays_buried_.empty ())
+        return best != NONE ? std::vector<std::uint32_t>{best} : std::vector<std::uint32_t>{};
+      std::array<std::uint32_t, 2> pair{NONE, NONE};
+      double weakest_pair = 0;
+      for (std::uint32_t t : s.star.tetrahedra ())
+        for (int i = 0; i < 4 && !flipped_[t]; ++i)
+        {
+          const std::uint32_t u = tetrahedra_.neighbour (t, i);
+          if (u == OUTSIDE_HULL || flipped_[u] || inside (u) != inside (t) || !touches (u))
+            continue;
+          const double margin = double (labels_.margin[t]) + labels_.margin[u];
+          if (pair[0] == NONE || margin < weakest_pair)
+          {
+            pair = {t, u};
+            weakest_pair = margin;
+          }
+        }
+      if (pair[0] != NONE)
+        return {pair[0], pair[1]};
     }
     return {};
   }
@@ -315,6 +347,7 @@ private:
   const Tetrahedra& tetrahedra_;
   const SimplicialComplex& complex_;
   SolidLabels& labels_;
+  std::vector<std::uint8_t> stays_buried_; // per vertex, with keep_buried; else empty
   std::vector<std::uint8_t> flipped_;
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
   StarScratch scratch_; // the sequential mending's
@@ -324,11 +357,11 @@ private:
 
 SolidRepair
 repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
-             SolidLabels& labels)
+             SolidLabels& labels, bool keep_buried)
 {
   if (tetrahedra.complex ().dimension () != 3)
     return {};
-  return Repairer (tetrahedra, labels).run (x, positions);
+  return Repairer (tetrahedra, labels, keep_buried).run (x, positions);
 }
 
 } // namespace pcl_wrap::detail

@@ -27,7 +27,8 @@ struct SolidRepair
   * - at a vertex whose triangles make more than one fan, the weakest connected part of its star
   *   changes side;
   * - a vertex buried inside the solid (or floating outside it) gets its weakest tetrahedron that
-  *   touches the surface moved out (or in), which puts it on the surface.
+  *   touches the surface moved out (or in), which puts it on the surface; with \a keep_buried
+  *   (the points sample a volume) a vertex buried from the start stays inside.
   * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX()).
   * Each tetrahedron changes side at most once in the mending, so the repair ends; a pinch it
   * cannot mend is left to the pinch split (splitSolidPinches()).
@@ -35,6 +36,6 @@ struct SolidRepair
   * \param[in] positions per vertex */
 SolidRepair
 repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
-             SolidLabels& labels);
+             SolidLabels& labels, bool keep_buried = false);
 
 } // namespace pcl_wrap::detail

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// The default surface loses no point the paper's W has on it (docs/surface.md), and points that
+// sample a volume give the volume's outer boundary, W's, with the points inside left inside.
+#include "support/degenerate_samples.h"
+#include "support/samplers.h"
+#include "support/topology.h"
+#include "support/wrap_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+#include <string>
+
+namespace pcl_wrap::test
+{
+namespace
+{
+
+/** The input points on the triangles of \a r, a copy counted as its point. */
+std::set<PointIndex>
+pointsOn (const WrapResult& r, std::size_t n)
+{
+  std::set<PointIndex> on;
+  for (const auto& t : r.surface.triangles)
+    for (PointIndex v : t)
+      on.insert (v < n ? v : r.copies.at (v - n));
+  return on;
+}
+
+/** \a n points in \a blobs Gaussian clusters of random centres and sizes. */
+std::vector<Point3>
+blobSample (std::size_t n, int blobs, unsigned seed)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (-1.0, 1.0), size (0.05, 0.4);
+  std::normal_distribution<double> g;
+  std::vector<Point3> centres (blobs);
+  std::vector<double> sizes (blobs);
+  for (int b = 0; b < blobs; ++b)
+  {
+    centres[b] = {u (random), u (random), u (random)};
+    sizes[b] = size (random);
+  }
+  std::vector<Point3> p (n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const int b = static_cast<int> (i % blobs);
+    p[i] = {centres[b][0] + sizes[b] * g (random), centres[b][1] + sizes[b] * g (random),
+            centres[b][2] + sizes[b] * g (random)};
+  }
+  return p;
+}
+
+std::vector<NamedSample>
+samples ()
+{
+  std::vector<NamedSample> s = degenerateFamilies ();
+  for (unsigned seed = 1; seed <= 4; ++seed)
+  {
+    const std::string k = " " + std::to_string (seed);
+    s.push_back ({"sphere" + k, sphereSample (400 * seed, seed, 0.0)});
+    s.push_back ({"sphere, noise of about a spacing" + k, sphereSample (3000, seed, 0.02)});
+    s.push_back ({"thick noisy shell (a volume)" + k, sphereSample (1500 * seed, seed, 0.2)});
+    s.push_back ({"uniform cube (a volume)" + k, cubeSample (500 * seed, seed)});
+    s.push_back ({"torus" + k, torusSample (1000 * seed, seed)});
+    s.push_back ({"terrain" + k, terrainSample (600 * seed, seed)});
+    s.push_back ({"gaussian blobs" + k, blobSample (300 * seed, 1 + static_cast<int> (seed), seed)});
+  }
+  s.push_back ({"grid 11^3", gridSample (11, 11, 11)});
+  return s;
+}
+
+TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
+{
+  for (const auto& [name, points] : samples ())
+  {
+    SCOPED_TRACE (name);
+    const std::size_t on_w = pointsOn (computeWrap (points, rawOutput ()), points.size ()).size ();
+    const WrapResult r = computeWrap (points);
+    EXPECT_GE (pointsOn (r, points.size ()).size (), on_w);
+    if (r.statistics.triangulation_dimension == 3)
+    {
+      const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
+      EXPECT_TRUE (s.closed_manifold);
+      EXPECT_TRUE (s.consistently_oriented);
+    }
+  }
+}
+
+TEST (SurfaceKeepsPoints, AVolumeGivesItsOuterBoundary)
+{
+  // A grid's W is the cube's boundary: the labelling's solid has nothing to add, and the points
+  // inside stay inside.
+  for (int n : {12, 16})
+  {
+    SCOPED_TRACE (n);
+    const std::vector<Point3> grid = gridSample (n, n, n);
+    const WrapResult r = computeWrap (grid);
+    const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_EQ (s.components, 1u);
+    EXPECT_EQ (s.euler, 2);
+    std::size_t on_boundary = 0;
+    for (PointIndex v : pointsOn (r, grid.size ()))
+    {
+      const auto& p = grid[v];
+      on_boundary += p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == n - 1 || p[1] == n - 1 || p[2] == n - 1;
+    }
+    EXPECT_EQ (pointsOn (r, grid.size ()).size (), on_boundary) << "no point inside the cube on it";
+    EXPECT_EQ (on_boundary, std::size_t (n * n * n - (n - 2) * (n - 2) * (n - 2))) << "every point on its boundary";
+  }
+  // Uniform points in a cube: one closed surface, the points inside off it.
+  const std::vector<Point3> cube = cubeSample (4000, 5);
+  const WrapResult r = computeWrap (cube);
+  const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
+  EXPECT_EQ (s.components, 1u);
+  EXPECT_LT (pointsOn (r, cube.size ()).size () * 2, cube.size ());
+}
+
+} // namespace
+} // namespace pcl_wrap::test
