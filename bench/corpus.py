@@ -9,10 +9,11 @@ points must get right: inner voids (a hollow ball keeps its inner shell), lost p
 objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup),
 bridges (linked rings, thin cylinders a few spacings apart), separate objects, noise (0.25, 0.5
 and 1 times the spacing, and uneven density) and degenerate data (outliers). Fixed seeds: the
-same files every time. --quick leaves out the largest clouds.
+same files every time, each case drawn from its own seed. --quick leaves out the largest clouds.
 """
 import json
 import sys
+import zlib
 
 import numpy as np
 
@@ -130,44 +131,59 @@ def noisy(p, sigma):
 
 
 def cases(quick):
+    """(class, name, make, components, genus): make() draws the points after the generator is
+    seeded from the name, so that each case is the same whatever the others are."""
     c = []
     # inner voids: nested spheres keep both shells; a solid ball's sample has none
-    c.append(("voids", "hollow_ball", np.r_[sphere(6000), sphere(2500, 0.6)], 2, 0))
-    c.append(("voids", "three_nested", np.r_[sphere(6000), sphere(3000, 0.7), sphere(1200, 0.4)], 3, 0))
+    c.append(("voids", "hollow_ball", lambda: np.r_[sphere(6000), sphere(2500, 0.6)], 2, 0))
+    c.append(("voids", "three_nested", lambda: np.r_[sphere(6000), sphere(3000, 0.7), sphere(1200, 0.4)], 3, 0))
     # lost parts: coarse objects side by side
-    c.append(("parts", "two_coarse_tori", np.r_[torus(400, 1, 0.35), torus(400, 1, 0.35, c=(3.0, 0, 0))], 2, 2))
-    c.append(("parts", "coarse_sphere_and_torus", np.r_[sphere(300), torus(500, 1, 0.35, c=(2.6, 0, 0))], 2, 1))
+    c.append(("parts", "two_coarse_tori", lambda: np.r_[torus(400, 1, 0.35), torus(400, 1, 0.35, c=(3.0, 0, 0))],
+              2, 2))
+    c.append(("parts", "coarse_sphere_and_torus", lambda: np.r_[sphere(300), torus(500, 1, 0.35, c=(2.6, 0, 0))],
+              2, 1))
     # holes and tunnels wider than a few spacings stay open
-    c.append(("holes", "plate_five_holes", plate_with_holes(12000), 1, 5))
-    c.append(("holes", "thick_torus", torus(3000, 1, 0.6), 1, 1))
-    # bridges: linked rings, thin cylinders a few spacings apart
-    rings = np.r_[torus(2500, 1, 0.15), torus(2500, 1, 0.15, c=(1.2, 0, 0), axis=1),
-                  torus(2500, 1, 0.15, c=(2.4, 0, 0))]  # a chain: each linked with the next
-    c.append(("bridges", "three_linked_rings", rings, 3, 3))
-    # radius 0.15, spacing about 0.016: gaps of 2.5 spacings
-    bundle = np.concatenate([capped_cylinder(2500, 0.15, 3.0, c=(0.34 * i, 0, 0)) for i in range(4)])
-    c.append(("bridges", "four_thin_cylinders", bundle, 4, 0))
+    c.append(("holes", "plate_five_holes", lambda: plate_with_holes(12000), 1, 5))
+    c.append(("holes", "thick_torus", lambda: torus(3000, 1, 0.6), 1, 1))
+    c.append(("holes", "mug", lambda: mug(15000), 1, 1))
+    c.append(("holes", "thin_walled_cup", lambda: cup(15000, 0.06), 1, 0))
+    # bridges: linked rings (a chain: each linked with the next), thin cylinders a few spacings
+    # apart (radius 0.15, spacing about 0.016: gaps of 2.5 spacings)
+    c.append(("bridges", "three_linked_rings",
+              lambda: np.r_[torus(2500, 1, 0.15), torus(2500, 1, 0.15, c=(1.2, 0, 0), axis=1),
+                            torus(2500, 1, 0.15, c=(2.4, 0, 0))], 3, 3))
+    c.append(("bridges", "four_thin_cylinders",
+              lambda: np.concatenate([capped_cylinder(2500, 0.15, 3.0, c=(0.34 * i, 0, 0)) for i in range(4)]), 4, 0))
     # separate objects stay separate
     for gap in (0.5, 2.0):
-        c.append(("separate", "two_spheres_gap_%g" % gap, np.r_[sphere(5000), sphere(5000, c=(2 + gap, 0, 0))], 2, 0))
-    c.append(("separate", "three_spheres_row", np.r_[sphere(3000), sphere(3000, c=(2.5, 0, 0)),
-                                                        sphere(3000, c=(5.0, 0, 0))], 3, 0))
-    c.append(("separate", "sphere_beside_torus", np.r_[sphere(4000), torus(5000, 1, 0.35, c=(3.0, 0, 0))], 2, 1))
-    c.append(("holes", "mug", mug(15000), 1, 1))
-    c.append(("holes", "thin_walled_cup", cup(15000, 0.06), 1, 0))
+        c.append(("separate", "two_spheres_gap_%g" % gap,
+                  lambda gap=gap: np.r_[sphere(5000), sphere(5000, c=(2 + gap, 0, 0))], 2, 0))
+    c.append(("separate", "three_spheres_row",
+              lambda: np.r_[sphere(3000), sphere(3000, c=(2.5, 0, 0)), sphere(3000, c=(5.0, 0, 0))], 3, 0))
+    c.append(("separate", "sphere_beside_torus", lambda: np.r_[sphere(4000), torus(5000, 1, 0.35, c=(3.0, 0, 0))],
+              2, 1))
+
     # uneven density: one half of a sphere sampled ten times as densely as the other
-    s = sphere(20000)
-    c.append(("noise", "sphere_uneven_density", np.r_[s[s[:, 0] > 0], s[s[:, 0] <= 0][::10]], 1, 0))
+    def uneven():
+        s = sphere(20000)
+        return np.r_[s[s[:, 0] > 0], s[s[:, 0] <= 0][::10]]
+
+    c.append(("noise", "sphere_uneven_density", uneven, 1, 0))
+
     # noise of 0.25, 0.5 and 1 times the spacing
+    def noisy_shape(shape, n, k):
+        p = sphere(n) if shape == "sphere" else torus(n, 1, 0.4)
+        return noisy(p, k * median_spacing(p))
+
     for n in (10000,) if quick else (10000, 100000):
         for shape, genus in (("sphere", 0), ("torus", 1)):
-            p = sphere(n) if shape == "sphere" else torus(n, 1, 0.4)
-            s = median_spacing(p)
             for k in (0.25, 0.5, 1.0):
-                c.append(("noise", "%s_%dk_noise_%g" % (shape, n // 1000, k), noisy(p, k * s), 1, genus))
+                c.append(("noise", "%s_%dk_noise_%g" % (shape, n // 1000, k),
+                          lambda shape=shape, n=n, k=k: noisy_shape(shape, n, k), 1, genus))
     # degenerate data: a far outlier stays out of the surface's shape
-    c.append(("degenerate", "sphere_and_far_outlier", np.r_[sphere(3000), [[1e3, 0, 0]]], 1, 0))
-    c.append(("degenerate", "sphere_and_five_outliers", np.r_[sphere(5000), 3 * unit(rng.normal(size=(5, 3)))], 1, 0))
+    c.append(("degenerate", "sphere_and_far_outlier", lambda: np.r_[sphere(3000), [[1e3, 0, 0]]], 1, 0))
+    c.append(("degenerate", "sphere_and_five_outliers",
+              lambda: np.r_[sphere(5000), 3 * unit(rng.normal(size=(5, 3)))], 1, 0))
     return c
 
 
@@ -180,7 +196,10 @@ def main():
 
     os.makedirs(out, exist_ok=True)
     manifest = []
-    for klass, name, points, components, genus in cases(quick):
+    global rng
+    for klass, name, make, components, genus in cases(quick):
+        rng = np.random.default_rng(zlib.crc32(name.encode()))
+        points = make()
         np.savetxt("%s/%s.xyz" % (out, name), points, fmt="%.9g")
         manifest.append({"class": klass, "name": name, "points": len(points), "components": components,
                          "genus": genus, "spacing": median_spacing(points)})
