@@ -39,7 +39,8 @@ public:
 
   /** Is the gap between part \a p and part \a q along the tetrahedra of \a chain no wider than
     * UNRESOLVED_GAP spacings: some vertex of p on the chain as near some vertex of q on it, in
-    * units of the larger of their spacings (the shortest Delaunay edge at each)? */
+    * units of the smaller of their spacings (the shortest Delaunay edge at each: a lone point of a
+    * coarse sample has a long one)? */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
     std::vector<std::uint32_t> corners;
@@ -69,7 +70,7 @@ public:
     }
     for (const auto& [a, spacing_a] : on_p)
       for (const auto& [b, spacing_b] : on_q)
-        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::max (spacing_a, spacing_b))
+        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::min (spacing_a, spacing_b))
           return true;
     return false;
   }
