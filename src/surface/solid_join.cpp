@@ -19,11 +19,6 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** A part with fewer vertices is a fragment: too few points to show an object of their own. The
-  * labelling cuts such fragments off at thin necks (horn tips, finger tips: 4 to 24 vertices on
-  * the development models); the smallest separate object of bench/corpus.py has 300. */
-constexpr std::size_t FRAGMENT_VERTICES = 32;
-
 /** A join may close a gap up to this many times the spacing at its ends: one the sampling does not
   * resolve. Parts cut apart by the labelling lie within 1.1 spacings of each other; separate
   * objects, as close as two spacings, are apart. */

@@ -6,11 +6,18 @@
 #include "surface/solid_labelling.h"
 #include "wrap/subcomplex.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace pcl_wrap::detail
 {
+
+/** \brief A part of the solid (or a void in it) with fewer vertices is a fragment: too few points
+  * to show an object (or an inner surface) of their own. The labelling cuts such fragments off at
+  * thin necks (horn tips, finger tips: 4 to 24 vertices on the development models); the smallest
+  * separate object of bench/corpus.py has 300, its smallest inner shell 1,200. */
+constexpr std::size_t FRAGMENT_VERTICES = 32;
 
 /** \brief The connected parts of a solid, through the facets its tetrahedra share. */
 struct SolidParts

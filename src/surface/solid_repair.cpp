@@ -4,6 +4,7 @@
 
 #include "surface/link_cycle.h"
 #include "surface/solid_join.h"
+#include "surface/solid_voids.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 
@@ -55,6 +56,7 @@ public:
   SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
   {
     SolidRepair done;
+    done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_).size ();
     // Most vertices need nothing: find the others on all threads, then mend them in order.
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
     std::vector<std::uint32_t> work;
@@ -62,7 +64,10 @@ public:
       if (needs[v])
         work.push_back (v); // popped from the back: the lowest first
     mend (work, done);
-    const std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
+    std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
+    // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
+    const std::vector<std::uint32_t> filled = fillUnsampledVoids (tetrahedra_, labels_, flipped_);
+    joined.insert (joined.end (), filled.begin (), filled.end ());
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : joined)

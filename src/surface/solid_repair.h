@@ -29,7 +29,8 @@ struct SolidRepair
   * - a vertex buried inside the solid (or floating outside it) gets its weakest tetrahedron that
   *   touches the surface moved out (or in), which puts it on the surface; with \a keep_buried
   *   (the points sample a volume) a vertex buried from the start stays inside.
-  * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX()).
+  * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX());
+  * - first, the voids no inner surface's points show are filled (fillUnsampledVoids()).
   * Each tetrahedron changes side at most once in the mending, so the repair ends; a pinch it
   * cannot mend is left to the pinch split (splitSolidPinches()).
   * \param[in] tetrahedra attached to their complex
