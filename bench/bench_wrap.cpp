@@ -28,6 +28,7 @@
 #include <tbb/info.h>
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -125,7 +126,16 @@ main (int argc, char** argv)
   const unsigned seed = argc > 3 ? unsigned (std::stoul (argv[3])) : 1u;
   const int runs = argc > 4 ? std::max (1, std::stoi (argv[4])) : 1;
   const bool cold = argc == 6;
-  const std::vector<Point3> points = pcl_wrap::bench::makePoints (shape, n, seed);
+  std::vector<Point3> points;
+  try
+  {
+    points = pcl_wrap::bench::makePoints (shape, n, seed);
+  }
+  catch (const std::exception& e) // an unreadable or malformed file
+  {
+    std::cerr << "bench_wrap: " << e.what () << "\n";
+    return 1;
+  }
   // What the process holds before any measurement (the points, the program): subtracted from
   // nothing, shown so the peaks can be read against it.
   const Measurement baseline = measure ([] (Measurement&) {});

@@ -43,14 +43,16 @@ public:
   {
     if (!keep_buried)
       return;
-    // The vertices buried from the start stay inside; one buried by a move is brought back.
+    // The vertices buried from the start (every tetrahedron around them inside, none on the
+    // hull) stay inside; one buried by a move is brought back.
     stays_buried_.assign (complex_.numVertices (), 1);
     for (std::uint32_t t = 0; t < labels_.inside.size (); ++t)
-      for (int i = 0; labels_.inside[t] && i < 4; ++i)
-        if (!inside (tetrahedra_.neighbour (t, i)))
-          for (int j = 0; j < 4; ++j)
-            if (j != i)
-              stays_buried_[tetrahedra_.vertex (t, j)] = 0;
+      for (int i = 0; i < 4; ++i)
+        if (!labels_.inside[t])
+          stays_buried_[tetrahedra_.vertex (t, i)] = 0;
+        else if (tetrahedra_.neighbour (t, i) == OUTSIDE_HULL)
+          for (int j = 1; j < 4; ++j)
+            stays_buried_[tetrahedra_.vertex (t, (i + j) & 3)] = 0;
   }
 
   SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
@@ -61,7 +63,7 @@ public:
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
     std::vector<std::uint32_t> work;
     for (std::uint32_t v = complex_.numVertices (); v-- > 0;)
-      if (needs[v])
+      if (needs[v] && (stays_buried_.empty () || !stays_buried_[v])) // a volume's inside: nothing to do
         work.push_back (v); // popped from the back: the lowest first
     mend (work, done);
     std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
