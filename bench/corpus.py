@@ -8,7 +8,8 @@ the surface, and the median spacing of its points. The classes are what a surfac
 points must get right: inner voids (a hollow ball keeps its inner shell), lost parts (coarse
 objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup),
 bridges (linked rings, thin cylinders a few spacings apart), separate objects, noise (0.25, 0.5
-and 1 times the spacing, and uneven density) and degenerate data (outliers). Fixed seeds: the
+and 1 times the spacing, and uneven density), the closed development meshes of Debian's
+libcgal-demo resampled (with and without noise) and degenerate data (outliers). Fixed seeds: the
 same files every time, each case drawn from its own seed. --quick leaves out the largest clouds.
 """
 import json
@@ -130,6 +131,61 @@ def noisy(p, sigma):
     return p + sigma * rng.normal(size=p.shape)
 
 
+CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"  # Debian's libcgal-demo
+# Closed development meshes of that archive (the others are held back for evaluation).
+DEVELOPMENT_MESHES = ("knot1", "anchor_dense", "blobby", "dino", "fandisk", "triceratops", "bunny00")
+
+
+def read_off(text):
+    """Vertices and triangles (polygons split into fans) of an OFF file's text."""
+    words = [line.split("#")[0].split() for line in text.splitlines()]
+    words = [w for w in words if w]
+    if words[0][0] == "OFF" and len(words[0]) > 1:
+        words[0:1] = [["OFF"], words[0][1:]]
+    nv, nf = int(words[1][0]), int(words[1][1])
+    vertices = np.array([[float(x) for x in w[:3]] for w in words[2:2 + nv]])
+    triangles = []
+    for w in words[2 + nv:2 + nv + nf]:
+        k = int(w[0])
+        corners = [int(x) for x in w[1:1 + k]]
+        triangles += [(corners[0], corners[i], corners[i + 1]) for i in range(1, k - 1)]
+    return vertices, np.array(triangles)
+
+
+def on_mesh(vertices, triangles, n):
+    """n points uniformly by area on a triangle mesh."""
+    a, b, c = (vertices[triangles[:, i]] for i in range(3))
+    area = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    pick = rng.choice(len(triangles), size=n, p=area / area.sum())
+    u, v = rng.uniform(size=(2, n))
+    flip = u + v > 1
+    u, v = np.where(flip, 1 - u, u), np.where(flip, 1 - v, v)
+    return a[pick] + u[:, None] * (b - a)[pick] + v[:, None] * (c - a)[pick]
+
+
+def genus_of(vertices, triangles):
+    """The genus of a closed connected triangle mesh, from its Euler characteristic."""
+    edges = np.unique(np.sort(np.r_[triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]], axis=1), axis=0)
+    used = len(np.unique(triangles))
+    return (2 - (used - len(edges) + len(triangles))) // 2
+
+
+def development_meshes():
+    """(name, vertices, triangles) of the development meshes, when the archive is installed."""
+    import os
+    import tarfile
+
+    if not os.path.exists(CGAL_DATA):
+        print("corpus.py: no %s (libcgal-demo): no resampled meshes" % CGAL_DATA, file=sys.stderr)
+        return []
+    out = []
+    with tarfile.open(CGAL_DATA) as archive:
+        for name in DEVELOPMENT_MESHES:
+            text = archive.extractfile("data/meshes/%s.off" % name).read().decode()
+            out.append((name,) + read_off(text))
+    return out
+
+
 def cases(quick):
     """(class, name, make, components, genus): make() draws the points after the generator is
     seeded from the name, so that each case is the same whatever the others are."""
@@ -180,6 +236,18 @@ def cases(quick):
             for k in (0.25, 0.5, 1.0):
                 c.append(("noise", "%s_%dk_noise_%g" % (shape, n // 1000, k),
                           lambda shape=shape, n=n, k=k: noisy_shape(shape, n, k), 1, genus))
+    # the development meshes resampled: 20,000 points by area, without noise and with noise of
+    # half the spacing
+    for name, vertices, triangles in development_meshes():
+        genus = genus_of(vertices, triangles)
+
+        def resampled(vertices=vertices, triangles=triangles, k=0.0):
+            p = on_mesh(vertices, triangles, 20000)
+            return noisy(p, k * median_spacing(p)) if k else p
+
+        c.append(("resampled", "%s_20k" % name, resampled, 1, genus))
+        c.append(("resampled", "%s_20k_noise_0.5" % name,
+                  lambda vertices=vertices, triangles=triangles: resampled(vertices, triangles, 0.5), 1, genus))
     # degenerate data: a far outlier stays out of the surface's shape
     c.append(("degenerate", "sphere_and_far_outlier", lambda: np.r_[sphere(3000), [[1e3, 0, 0]]], 1, 0))
     c.append(("degenerate", "sphere_and_five_outliers",
