@@ -178,6 +178,54 @@ TEST (CleanSurface, SeparateObjectsAndNestedShellsStaySeparate)
   }
 }
 
+TEST (CleanSurface, CoarseObjectsStayWholeAndApart)
+{
+  // 400 points a torus: about 0.09 apart, the tori 0.3 apart at their nearest.
+  expectCleanSurface (together ({torusSample (400, 21, 1.0, 0.35),
+                                 placed (torusSample (400, 22, 1.0, 0.35), 1, 0, {3, 0, 0})}),
+                      2, 2);
+}
+
+/** A 4 x 2 x 0.3 plate with five round bores of radius 0.22 through it, its faces outside the
+  * bores and the bores' walls sampled uniformly by area. */
+std::vector<Point3>
+plateWithBores (std::size_t n, unsigned seed)
+{
+  const double a = 4, b = 2, t = 0.3, r = 0.22;
+  const auto centre = [&] (int i) { return -a / 2 + a * (i + 1) / 6; };
+  const double faces = 2 * (a * b - 5 * M_PI * r * r) + 2 * (a + b) * t, walls = 5 * 2 * M_PI * r * t;
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  std::vector<Point3> p;
+  while (p.size () < n)
+  {
+    if (u (random) * (faces + walls) < walls)
+    {
+      const double angle = 2 * M_PI * u (random);
+      p.push_back ({centre (static_cast<int> (5 * u (random))) + r * std::cos (angle), r * std::sin (angle),
+                    t * (u (random) - 0.5)});
+      continue;
+    }
+    // A point of the box's surface, by area; one in a bore's mouth is drawn again.
+    const double x = a * (u (random) - 0.5), y = b * (u (random) - 0.5), z = t * (u (random) - 0.5);
+    const double face = u (random) * (2 * a * b + 2 * (a + b) * t);
+    Point3 q = face < 2 * a * b               ? Point3{x, y, face < a * b ? t / 2 : -t / 2}
+               : face < 2 * a * b + 2 * a * t ? Point3{x, face < 2 * a * b + a * t ? b / 2 : -b / 2, z}
+                                              : Point3{face < 2 * a * b + 2 * a * t + b * t ? a / 2 : -a / 2, y, z};
+    bool in_mouth = false;
+    for (int i = 0; i < 5 && std::abs (q[2]) == t / 2; ++i)
+      in_mouth = in_mouth || std::hypot (q[0] - centre (i), q[1]) < r;
+    if (!in_mouth)
+      p.push_back (q);
+  }
+  return p;
+}
+
+TEST (CleanSurface, BoresThroughAPlateStayOpen)
+{
+  expectCleanSurface (plateWithBores (12000, 23), 1, 5);
+}
+
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
 {
   const auto points = load ("kitten.xyz");
