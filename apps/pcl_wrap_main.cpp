@@ -11,9 +11,11 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <unistd.h>
 #include <vector>
 
@@ -21,6 +23,14 @@ namespace
 {
 
 using namespace pcl_wrap;
+
+/** Do the paths name the same file (the same path, or the same existing file by another)? */
+bool
+sameFile (const std::string& a, const std::string& b)
+{
+  std::error_code error;
+  return a == b || std::filesystem::equivalent (a, b, error);
+}
 
 void
 printUsage (std::ostream& out)
@@ -60,6 +70,7 @@ printUsage (std::ostream& out)
       << defaults.num_threads
       << ")\n"
          "  --quiet               no progress on the terminal\n"
+         "  --version             the version\n"
          "  -h, --help            this text\n";
 }
 
@@ -115,6 +126,11 @@ parseOptions (int argc, char** argv)
     if (arg == "-h" || arg == "--help")
     {
       printUsage (std::cout);
+      std::exit (0);
+    }
+    if (arg == "--version")
+    {
+      std::cout << "pcl_wrap " << PCL_WRAP_VERSION << "\n";
       std::exit (0);
     }
     else if (arg == "--complex")
@@ -196,6 +212,11 @@ parseOptions (int argc, char** argv)
   o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];
   o.output = positional[1];
+  if (o.parameters.manifold && o.parameters.output != Output::raw)
+    usageError ("--manifold splits the raw W (--raw); the default surface is a 2-manifold already");
+  for (const std::string& written : {o.output, o.complex_json, o.stats_json})
+    if (!written.empty () && sameFile (written, o.input))
+      usageError (written + " is the input: it would be overwritten");
   try
   {
     checkParameters (o.parameters); // e.g. a region without a threshold, before reading the input

@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -376,6 +377,30 @@ TEST_F (Cli, UsageErrors)
   EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --bogus").status, 2);
   EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --threads x").status, 2);
   EXPECT_EQ (runCli ("--help").status, 0);
+  FILE* version = popen ((std::string (PCL_WRAP_CLI) + " --version").c_str (), "r");
+  ASSERT_NE (version, nullptr);
+  char line[128] = {};
+  const bool read = std::fgets (line, sizeof line, version) != nullptr;
+  EXPECT_EQ (pclose (version), 0);
+  EXPECT_TRUE (read && std::string (line).rfind ("pcl_wrap 0.", 0) == 0) << line;
+  // --manifold splits the raw W: without --raw it would do nothing, so it is refused.
+  const CliRun manifold = runCli (DIR + "ok.xyz " + DIR + "usage.ply --manifold");
+  EXPECT_EQ (manifold.status, 2);
+  EXPECT_NE (manifold.err.find ("--raw"), std::string::npos) << manifold.err;
+  EXPECT_FALSE (exists (DIR + "usage.ply"));
+  // Writing over the input, under its own name or another, is refused and leaves it as it was.
+  writeText (DIR + "same.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
+  for (const std::string& output : {"same.xyz", "./same.xyz"})
+  {
+    const CliRun same = runCli (DIR + "same.xyz " + DIR + output);
+    EXPECT_EQ (same.status, 2) << output;
+    EXPECT_NE (same.err.find ("input"), std::string::npos) << same.err;
+  }
+  EXPECT_EQ (runCli (DIR + "same.xyz " + DIR + "same.ply --stats-json " + DIR + "same.xyz").status, 2);
+  std::ifstream same (DIR + "same.xyz");
+  std::stringstream text;
+  text << same.rdbuf ();
+  EXPECT_EQ (text.str (), "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
   const CliRun ok = runCli (DIR + "ok.xyz " + DIR + "tet.obj --threads 1");
   EXPECT_EQ (ok.status, 0) << ok.err;
   std::ifstream tet (DIR + "tet.obj");
