@@ -5,6 +5,8 @@
 #include "point_file.h"
 
 #include <cerrno>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -68,6 +70,38 @@ writeVtk (std::ostream& out, const std::vector<Point3>& points, const std::vecto
     out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
 
+void
+writeOff (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+{
+  out << "OFF\n# written by pcl_wrap\n" << points.size () << ' ' << triangles.size () << " 0\n";
+  for (const Point3& p : points)
+    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (const auto& t : triangles)
+    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+/** Binary STL: each triangle on its own, its corners and normal in float, as the format has it. */
+void
+writeStl (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+{
+  char header[80] = "binary STL written by pcl_wrap";
+  out.write (header, sizeof header);
+  putBinary<std::uint32_t> (out, static_cast<std::uint32_t> (triangles.size ()));
+  for (const auto& t : triangles)
+  {
+    const Point3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n)
+      putBinary (out, static_cast<float> (length > 0 ? x / length : 0.0));
+    for (const Point3* corner : {&a, &b, &c})
+      for (double x : *corner)
+        putBinary (out, static_cast<float> (x));
+    putBinary<std::uint16_t> (out, 0);
+  }
+}
+
 } // namespace
 
 void
@@ -98,7 +132,10 @@ writeAtomically (const std::string& path, const std::function<void (std::ostream
 bool
 isMeshFormat (const std::string& path)
 {
-  return endsWith (path, ".ply") || endsWith (path, ".obj") || endsWith (path, ".vtk");
+  for (const char* extension : {".ply", ".obj", ".vtk", ".off", ".stl"})
+    if (endsWith (path, extension))
+      return true;
+  return false;
 }
 
 void
@@ -106,12 +143,16 @@ writeMesh (const std::string& path, const std::vector<Point3>& points,
            const std::vector<std::array<PointIndex, 3>>& triangles)
 {
   if (!isMeshFormat (path))
-    throw FileError (path + ": unknown output format (expected .ply, .obj or .vtk)");
+    throw FileError (path + ": unknown output format (expected .ply, .obj, .vtk, .off or .stl)");
   writeAtomically (path, [&] (std::ostream& out) {
     if (endsWith (path, ".ply"))
       writePly (out, points, triangles);
     else if (endsWith (path, ".obj"))
       writeObj (out, points, triangles);
+    else if (endsWith (path, ".off"))
+      writeOff (out, points, triangles);
+    else if (endsWith (path, ".stl"))
+      writeStl (out, points, triangles);
     else
       writeVtk (out, points, triangles);
   });

@@ -19,13 +19,14 @@ namespace pcl_wrap::apps
 void
 writeAtomically (const std::string& path, const std::function<void (std::ostream&)>& write);
 
-/** \brief Is \a path's extension one writeMesh() knows (.ply, .obj, .vtk)? */
+/** \brief Is \a path's extension one writeMesh() knows (.ply, .obj, .vtk, .off, .stl)? */
 bool
 isMeshFormat (const std::string& path);
 
 /** \brief Writes a triangle mesh whose vertices are \a points in order, by extension: .ply
-  * (binary, double coordinates), .obj or .vtk (legacy ASCII, double coordinates). Non-finite
-  * points are written as they are: triangles never use them.
+  * (binary, double coordinates), .obj, .vtk (legacy ASCII) or .off (ASCII, double coordinates),
+  * or .stl (binary; each triangle's corners and normal in float, no shared vertices, as the format
+  * has it). Non-finite points are written as they are: triangles never use them.
   * \throws FileError when the file cannot be written */
 void
 writeMesh (const std::string& path, const std::vector<Point3>& points,

@@ -38,7 +38,8 @@ printUsage (std::ostream& out)
   const WrapParameters defaults;
   out << "usage: pcl_wrap INPUT OUTPUT [options]\n\n"
          "Wraps the points of INPUT (.pcd .ply .xyz .txt .off .obj) in Edelsbrunner's Wrap surface and\n"
-         "writes it to OUTPUT (.ply .obj .vtk). The output's vertices are the input points in input order,\n"
+         "writes it to OUTPUT (.ply .obj .vtk .off .stl). The output's vertices are the input points in input\n"
+         "order (.stl has no shared vertices: each triangle carries its corners),\n"
          "so a face's indices are input point indices.\n\n"
          "options:\n"
          "  --complex FILE.json   write the complex: X by dimension, the paper's W = Bd X, the output\n"

@@ -3,6 +3,7 @@
 //
 // The pcl_wrap command-line tool, run as a user runs it: every input and output format, the
 // JSON files, and one clear error line with no output for every malformed input.
+#include "point_file.h"
 #include "support/pcl_mesh.h"
 #include "support/samplers.h"
 #include "support/topology.h"
@@ -111,13 +112,36 @@ TEST_F (Cli, EveryInputFormatGivesTheSameSurfaceInEveryOutputFormat)
   ASSERT_EQ (pcl::io::savePLYFileBinary (DIR + "in.ply", cloud), 0);
 
   for (const std::string input : {"in.xyz", "in.off", "in.obj", "in.pcd", "in.ply"})
-    for (const std::string output : {"out.ply", "out.obj", "out.vtk"})
+    for (const std::string output : {"out.ply", "out.obj", "out.vtk", "out.off", "out.stl"})
     {
       SCOPED_TRACE (input + " -> " + output);
       std::remove ((DIR + output).c_str ());
       const CliRun run = runCli (DIR + input + " " + DIR + output + " --quiet");
       ASSERT_EQ (run.status, 0) << run.err;
+      if (output == "out.off")
+      {
+        // Its header counts the vertices, the input points, and the triangles; its vertices are
+        // the points as a reader of point files sees them.
+        std::ifstream in (DIR + output);
+        std::string magic, comment;
+        std::size_t vertices = 0, faces = 0;
+        in >> magic;
+        std::getline (in, comment);
+        std::getline (in, comment);
+        in >> vertices >> faces;
+        EXPECT_EQ (magic, "OFF");
+        EXPECT_EQ (vertices, points.size ());
+        EXPECT_EQ (faces, triangles);
+        EXPECT_EQ (apps::readPoints (DIR + output), points);
+        continue;
+      }
       pcl::PolygonMesh mesh;
+      if (output == "out.stl")
+      {
+        ASSERT_GT (pcl::io::loadPolygonFileSTL (DIR + output, mesh), 0);
+        EXPECT_EQ (mesh.polygons.size (), triangles);
+        continue;
+      }
       if (output == "out.ply")
         ASSERT_GE (pcl::io::loadPLYFile (DIR + output, mesh), 0);
       else if (output == "out.obj")
@@ -373,7 +397,7 @@ TEST_F (Cli, UsageErrors)
   // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.
   writeText (DIR + "ok.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
   EXPECT_EQ (runCli (DIR + "ok.xyz").status, 2);
-  EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.stl").status, 2);
+  EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.dxf").status, 2);
   EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --bogus").status, 2);
   EXPECT_EQ (runCli (DIR + "ok.xyz " + DIR + "usage.ply --threads x").status, 2);
   EXPECT_EQ (runCli ("--help").status, 0);
