@@ -3,7 +3,7 @@
 # usage: test_viewer.sh PCL_WRAP_CLI MESH_TO_VTK INPUT
 #
 # Under Xvfb: scripts/render.sh draws INPUT's cloud, raw W and default surface with pcl_viewer
-# (each checked not blank); then every output format of the CLI opens in pcl_viewer: .vtk as
+# (each checked not blank); then the CLI's .vtk, .obj and .ply outputs open in pcl_viewer: .vtk as
 # written, .obj through PCL's pcl_obj2vtk, .ply through PCL's PLY reader.
 set -euo pipefail
 if [ -z "${DISPLAY:-}" ]; then
