@@ -129,7 +129,7 @@ parseOptions (int argc, char** argv)
       printUsage (std::cout);
       std::exit (0);
     }
-    if (arg == "--version")
+    else if (arg == "--version")
     {
       std::cout << "pcl_wrap " << PCL_WRAP_VERSION << "\n";
       std::exit (0);

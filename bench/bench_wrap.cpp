@@ -28,10 +28,10 @@
 #include <tbb/info.h>
 
 #include <algorithm>
-#include <exception>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <cstring>
 #include <functional>
 #include <iostream>

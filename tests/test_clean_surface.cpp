@@ -114,10 +114,7 @@ TEST (CleanSurface, TerrainGivesATwoSidedShellThroughItsPoints)
   EXPECT_TRUE (s.closed_manifold);
   EXPECT_TRUE (s.consistently_oriented);
   EXPECT_EQ (2 * long (s.components), s.euler) << "every piece a sphere: a doubled disk";
-  std::set<PointIndex> on;
-  for (const auto& t : r.surface.triangles)
-    for (PointIndex v : t)
-      on.insert (v < terrain.size () ? v : r.copies[v - terrain.size ()]);
+  const std::set<PointIndex> on = pointsOnSurface (r, terrain.size ());
   EXPECT_GE (on.size () * 100, terrain.size () * 99) << on.size () << " of " << terrain.size () << " points on it";
   EXPECT_GT (r.statistics.bridge_simplices, 0u);
 

@@ -7,10 +7,10 @@
 #include "surface/solid_voids.h"
 #include "support/pipeline.h"
 #include "support/samplers.h"
+#include "util/distance.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <set>
 #include <vector>
 
@@ -18,12 +18,6 @@ namespace pcl_wrap::test
 {
 namespace
 {
-
-double
-distanceTo (const Point3& p, const Point3& c)
-{
-  return std::sqrt ((p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2]));
-}
 
 TEST (SolidVoids, FillsABubbleKeepsASampledVoidAndTheOutside)
 {
@@ -36,7 +30,7 @@ TEST (SolidVoids, FillsABubbleKeepsASampledVoidAndTheOutside)
   const Point3 bubble_at{-0.4, -0.4, -0.4}, void_at{0.4, 0.4, 0.4};
   std::uint32_t centre = 0;
   for (std::uint32_t v = 1; v < complex.numVertices (); ++v)
-    if (distanceTo (p.points[v], bubble_at) < distanceTo (p.points[centre], bubble_at))
+    if (detail::distance (p.points[v], bubble_at) < detail::distance (p.points[centre], bubble_at))
       centre = v;
   enum Region : std::uint8_t
   {
@@ -53,7 +47,7 @@ TEST (SolidVoids, FillsABubbleKeepsASampledVoidAndTheOutside)
     for (int i = 0; i < 4; ++i)
     {
       hull = hull || p.tetrahedra.neighbour (t, i) == detail::OUTSIDE_HULL;
-      near_void = near_void || distanceTo (p.points[complex.vertex (3, t, i)], void_at) < 0.35;
+      near_void = near_void || detail::distance (p.points[complex.vertex (3, t, i)], void_at) < 0.35;
       has_centre = has_centre || complex.vertex (3, t, i) == centre;
     }
     region[t] = hull ? OUTSIDE : near_void ? VOID : has_centre ? BUBBLE : SOLID;

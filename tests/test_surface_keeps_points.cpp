@@ -19,17 +19,6 @@ namespace pcl_wrap::test
 namespace
 {
 
-/** The input points on the triangles of \a r, a copy counted as its point. */
-std::set<PointIndex>
-pointsOn (const WrapResult& r, std::size_t n)
-{
-  std::set<PointIndex> on;
-  for (const auto& t : r.surface.triangles)
-    for (PointIndex v : t)
-      on.insert (v < n ? v : r.copies.at (v - n));
-  return on;
-}
-
 /** \a n points in \a blobs Gaussian clusters of random centres and sizes. */
 std::vector<Point3>
 blobSample (std::size_t n, int blobs, unsigned seed)
@@ -78,9 +67,9 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
   for (const auto& [name, points] : samples ())
   {
     SCOPED_TRACE (name);
-    const std::size_t on_w = pointsOn (computeWrap (points, rawOutput ()), points.size ()).size ();
+    const std::size_t on_w = pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ();
     const WrapResult r = computeWrap (points);
-    EXPECT_GE (pointsOn (r, points.size ()).size (), on_w);
+    EXPECT_GE (pointsOnSurface (r, points.size ()).size (), on_w);
     if (r.statistics.triangulation_dimension == 3)
     {
       const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
@@ -103,13 +92,14 @@ TEST (SurfaceKeepsPoints, AVolumeGivesItsOuterBoundary)
     EXPECT_TRUE (s.closed_manifold);
     EXPECT_EQ (s.components, 1u);
     EXPECT_EQ (s.euler, 2);
+    const std::set<PointIndex> on = pointsOnSurface (r, grid.size ());
     std::size_t on_boundary = 0;
-    for (PointIndex v : pointsOn (r, grid.size ()))
+    for (PointIndex v : on)
     {
       const auto& p = grid[v];
       on_boundary += p[0] == 0 || p[1] == 0 || p[2] == 0 || p[0] == n - 1 || p[1] == n - 1 || p[2] == n - 1;
     }
-    EXPECT_EQ (pointsOn (r, grid.size ()).size (), on_boundary) << "no point inside the cube on it";
+    EXPECT_EQ (on.size (), on_boundary) << "no point inside the cube on it";
     EXPECT_EQ (on_boundary, std::size_t (n * n * n - (n - 2) * (n - 2) * (n - 2))) << "every point on its boundary";
   }
   // Uniform points in a cube: one closed surface, the points inside off it.
@@ -117,7 +107,7 @@ TEST (SurfaceKeepsPoints, AVolumeGivesItsOuterBoundary)
   const WrapResult r = computeWrap (cube);
   const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
   EXPECT_EQ (s.components, 1u);
-  EXPECT_LT (pointsOn (r, cube.size ()).size () * 2, cube.size ());
+  EXPECT_LT (pointsOnSurface (r, cube.size ()).size () * 2, cube.size ());
 }
 
 } // namespace

@@ -63,7 +63,7 @@ public:
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
     std::vector<std::uint32_t> work;
     for (std::uint32_t v = complex_.numVertices (); v-- > 0;)
-      if (needs[v] && (stays_buried_.empty () || !stays_buried_[v])) // a volume's inside: nothing to do
+      if (needs[v] && !staysBuried (v)) // a volume's inside: nothing to do
         work.push_back (v); // popped from the back: the lowest first
     mend (work, done);
     std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
@@ -159,6 +159,9 @@ private:
   };
 
   bool inside (std::uint32_t t) const { return t != OUTSIDE_HULL && labels_.inside[t]; }
+
+  /** In a volume, was \a v buried from the start (and so stays inside)? */
+  bool staysBuried (std::uint32_t v) const { return !stays_buried_.empty () && stays_buried_[v]; }
 
   /** The connected parts, on each side, of the star's tetrahedra for which \a keep (index into
     * s.star) holds, joined across facets that contain its vertex and every vertex \a through
@@ -309,7 +312,7 @@ private:
         return members (s, parts, p);
       return {};
     }
-    if ((parts.count[0] == 0 && (stays_buried_.empty () || !stays_buried_[v])) || parts.count[1] == 0)
+    if ((parts.count[0] == 0 && !staysBuried (v)) || parts.count[1] == 0)
     {
       // Buried or floating: move the weakest tetrahedron of the star that touches the other side;
       // in a volume, when none does (a point on a fin of X), the weakest such pair of a star
@@ -328,8 +331,10 @@ private:
       for (std::uint32_t t : s.star.tetrahedra ())
         if (!flipped_[t] && touches (t) && (best == NONE || labels_.margin[t] < labels_.margin[best]))
           best = t;
-      if (best != NONE || stays_buried_.empty ())
-        return best != NONE ? std::vector<std::uint32_t>{best} : std::vector<std::uint32_t>{};
+      if (best != NONE)
+        return {best};
+      if (stays_buried_.empty ()) // not a volume
+        return {};
       std::array<std::uint32_t, 2> pair{NONE, NONE};
       double weakest_pair = 0;
       for (std::uint32_t t : s.star.tetrahedra ())

@@ -152,6 +152,16 @@ openEdgeOfW (const WrapResult& r)
   return "";
 }
 
+std::set<PointIndex>
+pointsOnSurface (const WrapResult& r, std::size_t n)
+{
+  std::set<PointIndex> on;
+  for (const auto& t : r.surface.triangles)
+    for (PointIndex v : t)
+      on.insert (v < n ? v : r.copies.at (v - n));
+  return on;
+}
+
 std::size_t
 pinchEdges (const WrapResult& r)
 {

@@ -42,6 +42,11 @@ openEdgeOfW (const WrapResult& r);
 std::size_t
 pinchEdges (const WrapResult& r);
 
+/** The input points on the triangles of \a r's surface, a copy counted as its point; \a n: the
+  * number of input points. */
+std::set<PointIndex>
+pointsOnSurface (const WrapResult& r, std::size_t n);
+
 /** Does X (a tetrahedron or a triangle of it) meet the segment from \a a to \a b? A tunnel
   * whose axis X meets is sealed. */
 bool
