@@ -58,8 +58,11 @@ printUsage (std::ostream& out)
          "                        local modification: front deletion with the threshold above starts\n"
          "                        only from the surface inside this region\n"
          "  --raw                 write the paper's W = Bd X as it is (pinch edges and vertices,\n"
-         "                        sheets) instead of the default surface, a closed oriented\n"
-         "                        2-manifold through the points\n"
+         "                        sheets) instead of the default surface, an oriented 2-manifold\n"
+         "                        through the points: closed, or for a single layer (a terrain, a\n"
+         "                        scan seen from one side) one open sheet\n"
+         "  --closed              a single layer too as a closed surface: a two-sided shell, its\n"
+         "                        points copied per side (copies follow the input)\n"
          "  --manifold            with --raw: split W where it touches itself, so that the output\n"
          "                        is a closed 2-manifold: copies of the split points follow the input\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
@@ -78,7 +81,7 @@ printUsage (std::ostream& out)
 struct Options
 {
   std::string input, output, complex_json, stats_json, weight_field;
-  bool stats = false, quiet = false;
+  bool stats = false, quiet = false, raw = false, closed = false;
   int thresholds = 0; // --delta, --radius, --radius-rel and --sinks given: at most one
   WrapParameters parameters;
 };
@@ -177,7 +180,9 @@ parseOptions (int argc, char** argv)
         usageError ("--region takes sphere:x,y,z,r (r >= 0) or box:x0,y0,z0,x1,y1,z1 (lowest corner first)");
     }
     else if (arg == "--raw")
-      o.parameters.output = Output::raw;
+      o.raw = true;
+    else if (arg == "--closed")
+      o.closed = true;
     else if (arg == "--manifold")
       o.parameters.manifold = true;
     else if (arg == "--weight-field")
@@ -213,6 +218,9 @@ parseOptions (int argc, char** argv)
   o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];
   o.output = positional[1];
+  if (o.raw && o.closed)
+    usageError ("--closed applies to the default surface, not to the raw W (--raw)");
+  o.parameters.output = o.raw ? Output::raw : o.closed ? Output::closed : Output::surface;
   if (o.parameters.manifold && o.parameters.output != Output::raw)
     usageError ("--manifold splits the raw W (--raw); the default surface is a 2-manifold already");
   for (const std::string& written : {o.output, o.complex_json, o.stats_json})

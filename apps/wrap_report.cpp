@@ -221,8 +221,10 @@ printSummary (std::ostream& out, const WrapStatistics& s)
   if (s.pinch_edges_split + s.pinch_vertices_split + s.sheet_triangles_doubled > 0)
     out << "; split " << s.pinch_edges_split << " pinch edges, " << s.pinch_vertices_split << " pinch vertices, "
         << s.sheet_triangles_doubled << " sheet triangles doubled";
-  if (s.single_layer)
+  if (s.single_layer && s.sheet_triangles_doubled > 0)
     out << "; the points are a single layer: a two-sided shell, " << s.bridge_simplices << " simplices tie its pieces";
+  else if (s.single_layer)
+    out << "; the points are a single layer: one open sheet";
   out << "\n"
       << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
   for (std::size_t i = 0; i < s.timings.size (); ++i)

@@ -14,8 +14,10 @@ namespace pcl_wrap::bench
 std::vector<Point3>
 makePoints (const std::string& shape, std::size_t n, unsigned seed)
 {
-  if (shape != "sphere" && shape != "cube" && shape != "torus" && shape != "terrain")
+  if (shape != "sphere" && shape != "cube" && shape != "torus" && shape != "terrain" && shape != "rough_terrain" &&
+      shape != "half_sphere")
     return pcl_wrap::apps::readPoints (shape);
+  const double spacing = 2.0 / std::sqrt (double (std::max<std::size_t> (n, 1))); // of a terrain
   std::mt19937_64 random (seed);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u (-1.0, 1.0), angle (0.0, 2.0 * M_PI);
@@ -27,6 +29,19 @@ makePoints (const std::string& shape, std::size_t n, unsigned seed)
     {
       const double x = u (random), y = u (random);
       q = {x, y, 0.2 * std::sin (3 * x) * std::cos (2 * y)};
+    }
+    else if (shape == "rough_terrain")
+    {
+      const double x = u (random), y = u (random);
+      q = {x, y,
+           0.2 * std::sin (3 * x) * std::cos (2 * y) + 0.02 * std::sin (40 * x) * std::cos (37 * y) +
+               0.2 * spacing * g (random)};
+    }
+    else if (shape == "half_sphere")
+    {
+      const double x = g (random), y = g (random), z = std::fabs (g (random));
+      const double r = (1.0 + 1e-3 * u (random)) / std::sqrt (x * x + y * y + z * z);
+      q = {x * r, y * r, z * r};
     }
     else if (shape == "torus")
     {

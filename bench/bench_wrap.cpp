@@ -118,7 +118,7 @@ main (int argc, char** argv)
 {
   if (argc < 3 || argc > 6 || (argc == 6 && std::strcmp (argv[5], "cold") != 0))
   {
-    std::cerr << "usage: bench_wrap sphere|cube|torus|FILE N [SEED [RUNS [cold]]]\n";
+    std::cerr << "usage: bench_wrap sphere|cube|torus|terrain|rough_terrain|half_sphere|FILE N [SEED [RUNS [cold]]]\n";
     return 2;
   }
   const std::string shape = argv[1];

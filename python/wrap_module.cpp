@@ -244,7 +244,10 @@ PYBIND11_MODULE (_core, m)
   py::enum_<SinkDeletion> (m, "SinkDeletion")
       .value ("front", SinkDeletion::front)
       .value ("global_", SinkDeletion::global);
-  py::enum_<Output> (m, "Output").value ("surface", Output::surface).value ("raw", Output::raw);
+  py::enum_<Output> (m, "Output")
+      .value ("surface", Output::surface)
+      .value ("closed", Output::closed)
+      .value ("raw", Output::raw);
 
   py::class_<WrapParameters> (m, "WrapParameters")
       .def (py::init<> ())
@@ -255,6 +258,7 @@ PYBIND11_MODULE (_core, m)
       .def_readwrite ("deletion", &WrapParameters::deletion)
       .def_readwrite ("region", &WrapParameters::region)
       .def_readwrite ("output", &WrapParameters::output)
+      .def_readwrite ("viewpoint", &WrapParameters::viewpoint)
       .def_readwrite ("manifold", &WrapParameters::manifold)
       .def_readwrite ("filtration", &WrapParameters::filtration);
 

@@ -54,6 +54,9 @@ checkParameters (const WrapParameters& p)
     throw std::invalid_argument ("the largest sinks: a count >= 1");
   if (!std::isfinite (p.weight_scale))
     throw std::invalid_argument ("weight_scale must be finite");
+  if (p.viewpoint &&
+      !(std::isfinite ((*p.viewpoint)[0]) && std::isfinite ((*p.viewpoint)[1]) && std::isfinite ((*p.viewpoint)[2])))
+    throw std::invalid_argument ("the viewpoint must be finite");
   const Region& r = p.region;
   if (r.shape == Region::Shape::everywhere)
     return;

@@ -40,7 +40,7 @@ WrapEngine::run ()
 bool
 WrapEngine::defaultSurface () const
 {
-  return parameters_.output == Output::surface && dimension_ == 3;
+  return parameters_.output != Output::raw && dimension_ == 3;
 }
 
 void
@@ -175,7 +175,8 @@ WrapEngine::extractSurface ()
     w_ = extractBoundary (*complex_, *x_);
     return; // timed with the report, as the boundary stage
   }
-  DefaultSurface::Output out = surface_->surface (*x_, vertex_positions_, result_.statistics, clock_);
+  DefaultSurface::Output out = surface_->surface (*x_, vertex_positions_, parameters_.output == Output::closed,
+                                                  parameters_.viewpoint, result_.statistics, clock_);
   surface_.reset ();
   tetrahedra_ = {};
   w_ = std::move (out.w);

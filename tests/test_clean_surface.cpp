@@ -92,23 +92,34 @@ TEST (CleanSurface, RawOutputIsStillThePapersW)
   EXPECT_NE (trianglesOf (raw), trianglesOf (clean));
 }
 
-TEST (CleanSurface, OneSidedCapGivesOneClosedSurfaceThroughItsPoints)
+TEST (CleanSurface, ClosedOneSidedCapIsTheDomeWithItsLid)
 {
-  // A scanner sees one side of a dome: the points of a hemisphere, no inside behind them.
+  // A scanner sees one side of a dome: the points of a hemisphere, a single layer (an open sheet
+  // by default). Closed, the output is the dome with its flat hull as the lid, one sphere through
+  // every point.
   std::vector<Point3> cap;
   for (const Point3& p : sphereSample (8000, 4, 0.0))
     if (p[2] > 0)
       cap.push_back (p);
-  expectCleanSurface (cap, 1, 0);
-  EXPECT_FALSE (computeWrap (cap).statistics.single_layer) << "a dome closed by its flat hull has volume";
+  WrapParameters closed;
+  closed.output = Output::closed;
+  const WrapResult r = computeWrap (cap, closed);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_EQ (s.components, 1u);
+  EXPECT_EQ (s.euler, 2);
+  EXPECT_EQ (pointsOnSurface (r, cap.size ()).size (), cap.size ());
 }
 
-TEST (CleanSurface, TerrainGivesATwoSidedShellThroughItsPoints)
+TEST (CleanSurface, ClosedTerrainIsATwoSidedShellThroughItsPoints)
 {
   // Where the terrain lies on its convex hull, nothing is behind it: the solid closed by the hull
-  // would have no thickness there. The output is X's layer once per side instead.
+  // would have no thickness there. Closed, the output is X's layer once per side.
   const std::vector<Point3> terrain = terrainSample (5000, 1);
-  const WrapResult r = computeWrap (terrain);
+  WrapParameters closed;
+  closed.output = Output::closed;
+  const WrapResult r = computeWrap (terrain, closed);
   EXPECT_TRUE (r.statistics.single_layer);
   const SurfaceReport s = describeSurface (trianglesOf (r));
   EXPECT_TRUE (s.closed_manifold);

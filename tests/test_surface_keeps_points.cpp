@@ -70,9 +70,16 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
     const std::size_t on_w = pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ();
     const WrapResult r = computeWrap (points);
     EXPECT_GE (pointsOnSurface (r, points.size ()).size (), on_w);
-    if (r.statistics.triangulation_dimension == 3)
+    const std::vector<Triangle> triangles (r.surface.triangles.begin (), r.surface.triangles.end ());
+    if (r.statistics.single_layer)
     {
-      const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
+      const OpenSurfaceReport s = describeOpenSurface (triangles);
+      EXPECT_TRUE (s.manifold);
+      EXPECT_TRUE (s.consistently_oriented);
+    }
+    else if (r.statistics.triangulation_dimension == 3)
+    {
+      const SurfaceReport s = describeSurface (triangles);
       EXPECT_TRUE (s.closed_manifold);
       EXPECT_TRUE (s.consistently_oriented);
     }

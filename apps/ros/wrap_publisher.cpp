@@ -58,12 +58,23 @@ readParameters (const ros::NodeHandle& private_nh)
     else
       throw std::invalid_argument ("~region takes [x, y, z, r] (a sphere) or [x0, y0, z0, x1, y1, z1] (a box)");
   }
-  std::string output = p.output == pcl_wrap::Output::raw ? "raw" : "surface";
+  std::string output = p.output == pcl_wrap::Output::raw      ? "raw"
+                       : p.output == pcl_wrap::Output::closed ? "closed"
+                                                              : "surface";
   private_nh.param ("output", output, output);
-  if (output != "surface" && output != "raw")
-    throw std::invalid_argument ("~output must be surface or raw, not '" + output + "'");
-  p.output = output == "raw" ? pcl_wrap::Output::raw : pcl_wrap::Output::surface;
+  if (output != "surface" && output != "closed" && output != "raw")
+    throw std::invalid_argument ("~output must be surface, closed or raw, not '" + output + "'");
+  p.output = output == "raw"      ? pcl_wrap::Output::raw
+             : output == "closed" ? pcl_wrap::Output::closed
+                                  : pcl_wrap::Output::surface;
   private_nh.param ("manifold", p.manifold, p.manifold);
+  std::vector<double> viewpoint;
+  if (private_nh.getParam ("viewpoint", viewpoint))
+  {
+    if (viewpoint.size () != 3)
+      throw std::invalid_argument ("~viewpoint takes [x, y, z]: where an open sheet faces");
+    p.viewpoint = std::array<double, 3>{viewpoint[0], viewpoint[1], viewpoint[2]};
+  }
   int threads = static_cast<int> (p.num_threads);
   private_nh.param ("threads", threads, threads);
   p.num_threads = static_cast<unsigned> (std::max (threads, 0));

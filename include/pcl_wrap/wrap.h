@@ -19,10 +19,10 @@ namespace pcl_wrap
   * Turns an unorganised cloud, with no normals and no parameters to tune, into a surface through
   * the points. The construction is the paper's: the Delaunay complex collapsed from the outside
   * in along the flow of empty spheres leaves X, whose boundary is W. The default output is the
-  * default surface built on it, a closed, oriented 2-manifold through the points
-  * (docs/surface.md); setOutput (Output::raw) gives W as it is. Every polygon indexes the input
-  * cloud (PCL's convention: \c output.cloud is the whole input, \c setIndices selects the points
-  * used). Non-finite points are skipped and duplicates kept once; both are reported.
+  * default surface built on it, a closed, oriented 2-manifold through the points, or for a single
+  * layer one open sheet (docs/surface.md); setOutput (Output::raw) gives W as it is. Every polygon
+  * indexes the input cloud (PCL's convention: \c output.cloud is the whole input, organised clouds
+  * keep their layout, \c setIndices selects the points used). Non-finite points are skipped and duplicates kept once; both are reported.
   *
   * \code
   * pcl_wrap::Wrap<pcl::PointXYZ> wrap;
@@ -78,10 +78,16 @@ public:
     * (with the threshold set above).
     * \param[in] region a Region::sphere or Region::box; Region () for the whole surface */
   void setRegion (const Region& region) { parameters_.region = region; }
-  /** \brief The surface reconstruct() returns: Output::surface (default), a closed oriented
-    * 2-manifold through the points, or Output::raw, the paper's W = Bd X as it is.
+  /** \brief The surface reconstruct() returns: Output::surface (default), an oriented 2-manifold
+    * through the points, closed, or one open sheet for a single layer (a terrain, a scan seen from
+    * one side); Output::closed, a single layer too closed (a two-sided shell, its points copied);
+    * or Output::raw, the paper's W = Bd X as it is.
     * \param[in] output the output */
   void setOutput (Output output) { parameters_.output = output; }
+  /** \brief Where the points were seen from: an open sheet faces it. By default the input's
+    * sensor_origin_ when the cloud is organised (a depth image, in its sensor's frame) or the
+    * origin is not PCL's (0, 0, 0); otherwise a sheet faces up (+z). */
+  void setViewpoint (double x, double y, double z) { parameters_.viewpoint = std::array<double, 3>{x, y, z}; }
   /** \brief With Output::raw: output a closed 2-manifold: pinch edges and vertices split, with
     * copies of their points appended to the output cloud after the input points (an organised
     * cloud then becomes unorganised), sheet triangles once per side.

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 namespace pcl_wrap
 {
@@ -21,8 +22,10 @@ enum class SinkDeletion : std::uint8_t
 /** \brief What the construction returns as its surface. */
 enum class Output : std::uint8_t
 {
-  surface, ///< a closed, oriented 2-manifold through the points: the boundary of the tetrahedra
-           ///< labelled inside (see docs/surface.md); the default
+  surface, ///< an oriented 2-manifold through the points (see docs/surface.md), the default:
+           ///< closed, the boundary of the tetrahedra labelled inside; for a single layer (a
+           ///< terrain, a scan seen from one side) open, one sheet through the points
+  closed,  ///< the same, but a single layer too closed: a two-sided shell, its points copied per side
   raw      ///< W = Bd X exactly as the paper defines it (pinches, sheets, dangling edges)
 };
 
@@ -137,6 +140,12 @@ struct WrapParameters
   /** \brief The surface returned: the default surface or the paper's W. X, the deletion and the
     * filtration are the same either way. */
   Output output = Output::surface;
+
+  /** \brief Where the points were seen from (a sensor's position, PCL's sensor_origin_): an open
+    * sheet (Output::surface of a single layer) faces it. Without it, a sheet faces up (+z), and a
+    * sheet with no up or down (a vertical wall) out of the solid its points close with their
+    * convex hull. */
+  std::optional<std::array<double, 3>> viewpoint;
 
   /** \brief Raw output only: a closed combinatorial 2-manifold: W's triangles, split where W touches itself
     * (pinch edges and vertices get copies of their points, appended after the input points) and

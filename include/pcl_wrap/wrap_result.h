@@ -137,9 +137,10 @@ struct WrapStatistics
     * points. */
   std::size_t tetrahedra_moved = 0;
   /** \brief The default surface: the points are a single layer (a terrain, a scan seen from one
-    * side), so the surface is X's boundary as a closed two-sided shell, the points copied per side. */
+    * side), so the surface is one open sheet through them (Output::surface) or X's boundary as a
+    * closed two-sided shell, the points copied per side (Output::closed). */
   bool single_layer = false;
-  /** \brief With single_layer: Delaunay triangles and tetrahedra added to tie pieces of the shell
+  /** \brief With single_layer and Output::closed: Delaunay triangles and tetrahedra added to tie pieces of the shell
     * that the split separated at a vertex to the rest. */
   std::size_t bridge_simplices = 0;
 
@@ -157,8 +158,9 @@ struct WrapStatistics
 struct WrapResult
 {
   WrapStatistics statistics;
-  /** \brief The output (WrapParameters::output): the default surface, a closed oriented
-    * 2-manifold through the points (docs/surface.md), or the paper's W as it is (Output::raw),
+  /** \brief The output (WrapParameters::output): the default surface, an oriented 2-manifold
+    * through the points, closed, or open for a single layer (docs/surface.md), or the paper's W as
+    * it is (Output::raw),
     * split into a 2-manifold with WrapParameters::manifold. */
   WrapSurface surface;
   /** \brief With WrapParameters::keep_complex: Del S by dimension with each simplex's class and

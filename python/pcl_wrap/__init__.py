@@ -7,8 +7,8 @@
     result.vertices, result.triangles              # (k, 3) float64, (m, 3) indices into vertices
     mesh = pcl_wrap.to_open3d(result)              # an open3d.geometry.TriangleMesh
 
-By default the surface is a closed, oriented 2-manifold through the points (docs/surface.md);
-output="raw" gives the paper's W = Bd X. The options are the C++ WrapParameters (docs/design.md).
+By default the surface is an oriented 2-manifold through the points, closed, or one open sheet for
+a single layer (docs/surface.md); output="raw" gives the paper's W = Bd X. The options are the C++ WrapParameters (docs/design.md).
 """
 
 import numpy as np
@@ -24,7 +24,7 @@ __all__ = ["wrap", "to_open3d", "median_spacing", "Threshold", "Region", "Filtra
 SIMPLEX_CLASSES = ("centered", "confident", "equivocal")
 
 _DELETIONS = {"front": SinkDeletion.front, "global": SinkDeletion.global_}
-_OUTPUTS = {"surface": Output.surface, "raw": Output.raw}
+_OUTPUTS = {"surface": Output.surface, "closed": Output.closed, "raw": Output.raw}
 
 
 class WrapResult:
@@ -117,6 +117,13 @@ def _parameters(options):
             if not isinstance(value, (bool, np.bool_)):
                 raise ValueError("%s must be True or False, not %r" % (name, value))
             setattr(p, name, bool(value))
+        elif name == "viewpoint":
+            if value is not None:
+                point = np.asarray(value, dtype=np.float64)
+                if point.shape != (3,) or not np.isfinite(point).all():
+                    raise ValueError("viewpoint must be three finite numbers (x, y, z), not %r" % (value,))
+                value = tuple(float(c) for c in point)
+            p.viewpoint = value
         elif name == "num_threads":
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not 0 <= value <= 4096:
                 raise ValueError("num_threads must be a whole number from 0 (all cores) to 4096, not %r" % (value,))
@@ -128,7 +135,7 @@ def _parameters(options):
             p.weight_scale = float(value)
         else:
             raise ValueError("unknown option %r; the options are: threshold, deletion, region, output, "
-                             "manifold, num_threads, weight_scale, keep_complex, filtration" % name)
+                             "viewpoint, manifold, num_threads, weight_scale, keep_complex, filtration" % name)
     if p.filtration:
         p.keep_complex = True  # the filtration's values live in the complex
     return p
@@ -145,8 +152,12 @@ def wrap(points, weights=None, **options):
                             Threshold.relative_radius(4); default: none (the basic wrap)
               deletion      "front" (default) or "global"
               region        a Region: local modification (front deletion with a size threshold)
-              output        "surface" (default: a closed 2-manifold through the points) or "raw"
-                            (the paper's W)
+              output        "surface" (default: an oriented 2-manifold through the points, closed,
+                            or one open sheet for a single layer such as a terrain), "closed" (a
+                            single layer too closed, its points copied per side) or "raw" (the
+                            paper's W)
+              viewpoint     (x, y, z): where the points were seen from; an open sheet faces it
+                            (default: up, +z)
               manifold      raw output split into a closed 2-manifold (default False)
               num_threads   0 (default: all cores) or a thread count for this call
               weight_scale  every weight multiplied by this (default 1)

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/default_surface.h"
 
+#include "surface/open_sheet.h"
 #include "surface/single_layer.h"
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_repair.h"
@@ -64,8 +65,8 @@ DefaultSurface::~DefaultSurface ()
 }
 
 DefaultSurface::Output
-DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, WrapStatistics& stats,
-                         StageClock& clock)
+DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
+                         const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
   flooding_.wait ();
@@ -73,6 +74,16 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   labelling_.reset ();
   clock.stageDone ("labelling");
   const bool single_layer = !labels.hull && isSingleLayer (complex, x, labels.inside);
+  if (single_layer && !closed && x.size (2) > 0)
+  {
+    // One open sheet through the points (a curve, with no triangle in X, is W below).
+    stats.single_layer = true;
+    Output out;
+    out.w = openSheet (adjacency_, extractBoundary (complex, x), positions,
+                       extractSolidBoundary (adjacency_, labels.inside), viewpoint);
+    clock.stageDone ("sheet");
+    return out;
+  }
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
   // the votes between their small spheres say nothing: the solid is X, whose boundary is the
   // volume's outer surface (the paper's W), and the points inside stay inside.

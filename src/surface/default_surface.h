@@ -24,7 +24,7 @@ namespace pcl_wrap::detail
 /** \brief The default surface (docs/surface.md) as one stage beside the paper's construction: the
   * labelling of the Delaunay tetrahedra, started right after the triangulation and flooded while
   * the construction computes X; then, given X, the repair into a 2-manifold, the surface read off
-  * the labels, the two-sided shell for a single layer, and the split of what still touches itself.
+  * the labels, the open sheet (or the closed two-sided shell) for a single layer, and the split of what still touches itself.
   * Its policy, which of these the output is, is in surface(). */
 class DefaultSurface
 {
@@ -51,9 +51,12 @@ public:
   };
 
   /** \brief The surface, once X is known; call once. Records the stages "labelling" and
-    * "repair" on \a clock and what it did in \a stats.
-    * \param[in] positions per vertex */
-  Output surface (const Subcomplex& x, const std::vector<Point3>& positions, WrapStatistics& stats, StageClock& clock);
+    * "repair" (or "sheet") on \a clock and what it did in \a stats.
+    * \param[in] positions per vertex
+    * \param[in] closed a single layer as a closed two-sided shell rather than an open sheet
+    * \param[in] viewpoint where an open sheet faces, if given (openSheet()) */
+  Output surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
+                  const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock);
 
 private:
   const Tetrahedra& adjacency_;

@@ -164,6 +164,29 @@ class Options(unittest.TestCase):
         raw = pcl_wrap.wrap(points, output="raw")
         self.assertFalse(np.array_equal(raw.triangles, result.triangles))
 
+    def test_a_terrain_is_one_open_sheet_facing_up_or_the_viewpoint(self):
+        rng = np.random.default_rng(3)
+        xy = rng.uniform(-1, 1, (4000, 2))
+        points = np.c_[xy, 0.2 * np.sin(3 * xy[:, 0]) * np.cos(2 * xy[:, 1])]
+        result = pcl_wrap.wrap(points)
+        self.assertTrue(result.statistics["single_layer"])
+        self.assertEqual(len(result.vertices), len(points))  # no point copied
+        edges, directed, paired = edge_counts(result.triangles)
+        self.assertEqual(edges, directed)  # every directed edge once: oriented
+        self.assertFalse(paired)  # open: some edge on one triangle only
+        a, b, c = (result.vertices[result.triangles[:, k]] for k in range(3))
+        up = np.cross(b - a, c - a)[:, 2].sum()
+        self.assertGreater(up, 0)
+        below = pcl_wrap.wrap(points, viewpoint=(0, 0, -10))
+        a, b, c = (below.vertices[below.triangles[:, k]] for k in range(3))
+        self.assertLess(np.cross(b - a, c - a)[:, 2].sum(), 0)
+        closed = pcl_wrap.wrap(points, output="closed")
+        edges, directed, paired = edge_counts(closed.triangles)
+        self.assertTrue(paired)
+        self.assertGreater(len(closed.vertices), len(points))  # copies per side
+        with self.assertRaises(ValueError):
+            pcl_wrap.wrap(points, viewpoint=(0, float("nan"), 0))
+
     def test_threshold_region_and_complex(self):
         points = torus(4000)
         basic = pcl_wrap.wrap(points, output="raw", keep_complex=True)

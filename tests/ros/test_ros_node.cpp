@@ -162,10 +162,23 @@ TEST (RosNode, OrganisedCloudWithNans)
   const Exchange got = exchange ("basic", *cloud, "camera");
   expectSameAsLibrary (got, cloud, pcl_wrap::WrapParameters (), "camera");
   ASSERT_TRUE (got.mesh);
-  // Organised as it came, unless the surface had to copy points to split a pinch (then the
-  // copies follow the points, as from the library).
-  const bool copied = std::size_t (got.mesh->cloud.width) * got.mesh->cloud.height > cloud->size ();
-  EXPECT_EQ (got.mesh->cloud.height, copied ? 1u : cloud->height);
+  // A depth image is a single layer: one open sheet, no point copied, the cloud organised as it
+  // came, the sheet facing the camera at the frame's origin.
+  EXPECT_EQ (got.mesh->cloud.width, cloud->width);
+  EXPECT_EQ (got.mesh->cloud.height, cloud->height);
+  ASSERT_FALSE (got.mesh->polygons.empty ());
+  double towards_camera = 0;
+  for (const auto& polygon : got.mesh->polygons)
+  {
+    const auto &a = (*cloud)[polygon.vertices[0]], &b = (*cloud)[polygon.vertices[1]],
+               &c = (*cloud)[polygon.vertices[2]];
+    const Eigen::Vector3f n =
+        (b.getVector3fMap () - a.getVector3fMap ()).cross (c.getVector3fMap () - a.getVector3fMap ());
+    towards_camera += -n.dot (a.getVector3fMap ());
+    for (const auto v : polygon.vertices)
+      EXPECT_TRUE (std::isfinite ((*cloud)[v].z)) << "a polygon on a point nothing was seen at";
+  }
+  EXPECT_GT (towards_camera, 0.0);
   pcl_wrap::WrapParameters raw;
   raw.output = pcl_wrap::Output::raw;
   EXPECT_EQ (libraryMesh (cloud, raw).cloud.height, cloud->height) << "the raw W keeps an organised cloud organised";

@@ -168,4 +168,62 @@ describeSurface (const std::vector<Triangle>& triangles)
   return r;
 }
 
+OpenSurfaceReport
+describeOpenSurface (const std::vector<Triangle>& triangles)
+{
+  OpenSurfaceReport r;
+  const auto uses = edgeUses (triangles);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
+  std::set<Triangle> distinct;
+  std::map<std::uint32_t, std::vector<std::pair<std::uint32_t, std::uint32_t>>> link;
+  UnionFind parts;
+  r.consistently_oriented = true;
+  for (const auto& t : triangles)
+  {
+    Triangle sorted = t;
+    std::sort (sorted.begin (), sorted.end ());
+    distinct.insert (sorted);
+    for (int i = 0; i < 3; ++i)
+    {
+      r.consistently_oriented &= directed.emplace (t[i], t[(i + 1) % 3]).second;
+      link[t[i]].emplace_back (t[(i + 1) % 3], t[(i + 2) % 3]);
+      parts.join (t[i], t[(i + 1) % 3]);
+    }
+  }
+  r.no_duplicate_triangles = distinct.size () == triangles.size ();
+  r.vertices = link.size ();
+  r.components = parts.roots ();
+  std::map<std::uint32_t, std::size_t> component_size;
+  for (const auto& entry : link)
+    r.largest_component_vertices = std::max (r.largest_component_vertices, ++component_size[parts.find (entry.first)]);
+  r.euler = long (r.vertices) - long (uses.size ()) + long (triangles.size ());
+  r.manifold = true;
+  for (const auto& [edge, count] : uses)
+  {
+    r.manifold &= count <= 2;
+    r.boundary_edges += count == 1;
+  }
+  // A vertex link is one cycle (inside) or one path (on the boundary): connected, degrees <= 2,
+  // and at most two link vertices of degree 1.
+  for (const auto& [v, edges] : link)
+  {
+    UnionFind path;
+    std::map<std::uint32_t, int> degree;
+    for (const auto& [a, b] : edges)
+    {
+      path.join (a, b);
+      ++degree[a];
+      ++degree[b];
+    }
+    int ends = 0;
+    for (const auto& [u, d] : degree)
+    {
+      r.manifold &= d <= 2;
+      ends += d == 1;
+    }
+    r.manifold &= path.roots () == 1 && ends <= 2;
+  }
+  return r;
+}
+
 } // namespace pcl_wrap::test

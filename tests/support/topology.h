@@ -49,4 +49,18 @@ isOneCycle (const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges);
 SurfaceReport
 describeSurface (const std::vector<Triangle>& triangles);
 
+/** An oriented 2-manifold with boundary, as a user checks one. */
+struct OpenSurfaceReport
+{
+  bool manifold = false;               // every edge in 1 or 2 triangles, every vertex link one path or cycle
+  bool consistently_oriented = false;  // every directed edge used at most once
+  bool no_duplicate_triangles = false; // no two triangles on the same three vertices
+  std::size_t vertices = 0, boundary_edges = 0, components = 0;
+  std::size_t largest_component_vertices = 0;
+  long euler = 0;
+};
+
+OpenSurfaceReport
+describeOpenSurface (const std::vector<Triangle>& triangles);
+
 } // namespace pcl_wrap::test

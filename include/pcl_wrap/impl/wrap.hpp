@@ -61,7 +61,13 @@ Wrap<PointInT>::computeResult ()
     const PointInT& p = (*input_)[i];
     points.push_back ({double (p.x), double (p.y), double (p.z)});
   }
-  result_ = computeWrap (points, gatherWeights (indices), parameters_);
+  // A sheet faces the sensor where the cloud says where it was: an organised cloud (a depth
+  // image) is in its sensor's frame; an unorganised one says so by an origin other than PCL's 0.
+  WrapParameters parameters = parameters_;
+  const Eigen::Vector4f& origin = input_->sensor_origin_;
+  if (!parameters.viewpoint && (input_->isOrganized () || origin.head<3> ().squaredNorm () > 0))
+    parameters.viewpoint = std::array<double, 3>{origin[0], origin[1], origin[2]};
+  result_ = computeWrap (points, gatherWeights (indices), parameters);
 
   // Positions in `points` -> indices into the input cloud; copies (manifold) follow the cloud.
   const auto to_cloud = [&] (PointIndex k) {

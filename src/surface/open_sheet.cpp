@@ -1,0 +1,689 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "surface/open_sheet.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+using Triangle = std::array<std::uint32_t, 3>;
+constexpr std::uint32_t NONE = ~std::uint32_t (0);
+/** A gap wider than this many spacings is one the sampling resolves: no triangle crosses it.
+  * Within a uniformly sampled sheet, one edge of W in two thousand is longer. */
+constexpr double GAP_SPACINGS = 3.5;
+/** Holes bounded by more edges are not looked at for filling (the widest fillable is a few spacings). */
+constexpr std::size_t MAX_HOLE_EDGES = 24;
+/** The id of a filling triangle, which need not be a face of the complex. */
+constexpr SimplexId NO_ID = ~SimplexId (0);
+
+/** The three edge ids of triangle \a id, opposite its vertices 2, 1 and 0: edge k joins its
+  * vertices k and k + 1 (mod 3) in the complex's order. */
+std::array<SimplexId, 3>
+edgesOf (const SimplicialComplex& complex, SimplexId id)
+{
+  return {complex.face (2, id, 0b011).id, complex.face (2, id, 0b110).id, complex.face (2, id, 0b101).id};
+}
+
+/** Is \a t an even permutation of its vertices in ascending order? */
+bool
+evenOrder (const Triangle& t)
+{
+  return (t[0] < t[1]) + (t[1] < t[2]) + (t[2] < t[0]) == 2;
+}
+
+std::array<double, 3>
+areaNormal (const Triangle& t, const std::vector<Point3>& p)
+{
+  const Point3 &a = p[t[0]], &b = p[t[1]], &c = p[t[2]];
+  const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+/** The growth of the sheets: the candidate triangles and the region grown from them. */
+class SheetGrowth
+{
+public:
+  SheetGrowth (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions)
+    : complex_ (tetrahedra.complex ()),
+      positions_ (positions),
+      edge_count_ (complex_.size (1), 0),
+      edge_forward_ (complex_.size (1), 0),
+      on_ (complex_.numVertices (), 0),
+      open_edges_ (complex_.numVertices (), 0)
+  {
+    measureSpacing (w);
+    for (SimplexId id : w.triangle_ids)
+      if (!spansGap (complex_.vertices (2, id)))
+        candidates_.push_back (id);
+    extra_from_ = static_cast<std::uint32_t> (candidates_.size ());
+    addTrianglesAroundDanglingEdges (tetrahedra, w);
+    // Per edge, the candidates on it, as offsets into one array.
+    edge_start_.assign (complex_.size (1) + 1, 0);
+    for (SimplexId id : candidates_)
+      for (SimplexId e : edgesOf (complex_, id))
+        ++edge_start_[e + 1];
+    for (std::size_t e = 0; e + 1 < edge_start_.size (); ++e)
+      edge_start_[e + 1] += edge_start_[e];
+    edge_candidates_.resize (edge_start_.back ());
+    std::vector<std::uint32_t> at (edge_start_.begin (), edge_start_.end () - 1);
+    for (std::uint32_t c = 0; c < candidates_.size (); ++c)
+      for (SimplexId e : edgesOf (complex_, candidates_[c]))
+        edge_candidates_[at[e]++] = c;
+    placed_.assign (candidates_.size (), NONE);
+  }
+
+  /** Grows sheets from every W triangle not reached yet whose points are all new. */
+  void grow ()
+  {
+    for (std::uint32_t seed = 0; seed < extra_from_; ++seed)
+    {
+      const std::uint32_t* v = complex_.vertices (2, candidates_[seed]);
+      if (placed_[seed] != NONE || on_[v[0]] || on_[v[1]] || on_[v[2]])
+        continue;
+      place (seed, {v[0], v[1], v[2]});
+      while (!queue_.empty ())
+      {
+        const Entry e = queue_.top ();
+        queue_.pop ();
+        if (placed_[e.candidate] == NONE)
+          tryPlace (e.candidate, e.edge);
+      }
+    }
+  }
+
+  /** Brings each point of W that the sheets missed onto them: a sheet triangle abc that is a
+    * facet of a Delaunay tetrahedron abcv becomes the tent abv, bcv, cav over it, the smallest
+    * such, with no edge across a gap. The tent keeps each edge on at most two triangles and each
+    * fan one. */
+  void detourThroughMissedPoints (const Tetrahedra& tetrahedra);
+
+  /** Closes the holes of the sheets smaller than a gap the sampling resolves (where the growth
+    * passed triangles by, or a long triangle was left out) by ear clipping, the shortest new edge
+    * first; the filling's triangles need not be Delaunay and have no id (NO_ID). */
+  void fillSmallHoles ();
+
+  /** Drops, at each point where the grown triangles make more than one fan, all but the largest. */
+  void dropExtraFans ();
+
+  /** The grown triangles, each connected sheet turned so that the sum over its triangles of
+    * \a facing (triangle, id), a pair compared in order, is not negative. */
+  template <typename Facing>
+  Boundary orientedSheets (const Facing& facing);
+
+private:
+  struct Entry
+  {
+    std::uint8_t kind; // 0 fills a notch, 1 brings a new point, 2 the rest
+    float size;        // squared longest edge
+    std::uint32_t candidate;
+    SimplexId edge;                      // the front edge it is placed across
+    bool operator<(const Entry& o) const // the priority queue pops the greatest: the least kind, size
+    {
+      return std::tie (o.kind, o.size, o.candidate) < std::tie (kind, size, candidate);
+    }
+  };
+
+  double distance (std::uint32_t a, std::uint32_t b) const
+  {
+    const Point3 &p = positions_[a], &q = positions_[b];
+    return std::sqrt ((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+
+  /** The spacing at each point of W: the length of its third-shortest edge in W (its longest, with
+    * fewer), or the median of its neighbours' where that is less, which the long edges of a rim
+    * or a bridge do not inflate. */
+  void measureSpacing (const Boundary& w)
+  {
+    const std::uint32_t nv = complex_.numVertices ();
+    std::vector<std::uint8_t> seen (complex_.size (1), 0);
+    std::vector<std::array<std::uint32_t, 2>> edges (w.dangling_edges.begin (), w.dangling_edges.end ());
+    for (SimplexId id : w.triangle_ids)
+      for (SimplexId e : edgesOf (complex_, id))
+        if (!seen[e])
+        {
+          seen[e] = 1;
+          edges.push_back ({complex_.vertex (1, e, 0), complex_.vertex (1, e, 1)});
+        }
+    std::vector<std::uint32_t> start (nv + 1, 0);
+    for (const auto& [a, b] : edges)
+    {
+      ++start[a + 1];
+      ++start[b + 1];
+    }
+    for (std::uint32_t v = 0; v < nv; ++v)
+      start[v + 1] += start[v];
+    std::vector<double> lengths (start.back ());
+    std::vector<std::uint32_t> neighbours (start.back ());
+    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
+    for (const auto& [a, b] : edges)
+    {
+      neighbours[at[a]] = b;
+      neighbours[at[b]] = a;
+      lengths[at[a]++] = lengths[at[b]++] = distance (a, b);
+    }
+    std::vector<double> third (nv, 0.0), scratch;
+    for (std::uint32_t v = 0; v < nv; ++v)
+      if (start[v] < start[v + 1])
+      {
+        scratch.assign (lengths.begin () + start[v], lengths.begin () + start[v + 1]);
+        const auto k = scratch.begin () + std::min<std::ptrdiff_t> (2, std::ptrdiff_t (scratch.size ()) - 1);
+        std::nth_element (scratch.begin (), k, scratch.end ());
+        third[v] = *k;
+      }
+    // A point at a rim, with few edges in the sheet, takes its neighbours' spacing where that is less.
+    spacing_.assign (nv, 0.0);
+    for (std::uint32_t v = 0; v < nv; ++v)
+      if (start[v] < start[v + 1])
+      {
+        scratch.clear ();
+        for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+          scratch.push_back (third[neighbours[k]]);
+        const auto middle = scratch.begin () + std::ptrdiff_t (scratch.size ()) / 2;
+        std::nth_element (scratch.begin (), middle, scratch.end ());
+        spacing_[v] = std::min (third[v], *middle);
+      }
+  }
+
+  /** Does an edge of the triangle \a v span a gap the sampling resolves: longer than
+    * GAP_SPACINGS times the spacing at both of its ends? */
+  bool spansGap (const std::uint32_t* v) const
+  {
+    return edgeSpansGap (v[0], v[1]) || edgeSpansGap (v[1], v[2]) || edgeSpansGap (v[2], v[0]);
+  }
+  bool edgeSpansGap (std::uint32_t a, std::uint32_t b) const
+  {
+    return distance (a, b) > GAP_SPACINGS * std::max (spacing_[a], spacing_[b]);
+  }
+
+  void addTrianglesAroundDanglingEdges (const Tetrahedra& tetrahedra, const Boundary& w)
+  {
+    if (w.dangling_edges.empty ())
+      return;
+    std::vector<std::uint8_t> listed (complex_.size (2), 0);
+    for (SimplexId id : candidates_)
+      listed[id] = 1;
+    Star star;
+    for (const auto& [u, v] : w.dangling_edges)
+    {
+      tetrahedra.gatherStar (u, star);
+      for (std::uint32_t t : star.tetrahedra ())
+        for (int i = 0; i < 4; ++i)
+        {
+          const Simplex f = complex_.facet (3, t, i);
+          const std::uint32_t* fv = complex_.vertices (2, f.id);
+          const bool has_u = fv[0] == u || fv[1] == u || fv[2] == u;
+          const bool has_v = fv[0] == v || fv[1] == v || fv[2] == v;
+          if (has_u && has_v && !listed[f.id] && !spansGap (fv))
+          {
+            listed[f.id] = 1;
+            candidates_.push_back (f.id);
+          }
+        }
+    }
+  }
+
+  float sizeOf (std::uint32_t c) const
+  {
+    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Point3 &a = positions_[v[k]], &b = positions_[v[(k + 1) % 3]];
+      longest = std::max (longest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                       (a[2] - b[2]) * (a[2] - b[2]));
+    }
+    return static_cast<float> (longest);
+  }
+
+  /** Queues the candidates on front edge \a e that are not placed. */
+  void queueAround (SimplexId e)
+  {
+    for (std::uint32_t k = edge_start_[e]; k < edge_start_[e + 1]; ++k)
+    {
+      const std::uint32_t c = edge_candidates_[k];
+      if (placed_[c] != NONE)
+        continue;
+      int on_front = 0;
+      for (SimplexId f : edgesOf (complex_, candidates_[c]))
+        on_front += edge_count_[f] == 1;
+      const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+      const bool brings_new = !on_[v[0]] || !on_[v[1]] || !on_[v[2]];
+      const std::uint8_t kind = on_front >= 2 ? 0 : brings_new ? 1 : 2;
+      queue_.push ({kind, sizeOf (c), c, e});
+    }
+  }
+
+  /** The edge of the complex between \a a and \a b, one of \a c's. */
+  SimplexId edgeBetween (std::uint32_t c, std::uint32_t a, std::uint32_t b) const
+  {
+    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+    const std::array<SimplexId, 3> e = edgesOf (complex_, candidates_[c]);
+    for (int k = 0; k < 3; ++k)
+      if ((v[k] == a && v[(k + 1) % 3] == b) || (v[k] == b && v[(k + 1) % 3] == a))
+        return e[k];
+    return e[0]; // not reached: a and b are two of c's vertices
+  }
+
+  /** Does the one grown triangle on edge \a e traverse it from \a a to \a b? */
+  bool traverses (SimplexId e, std::uint32_t a, std::uint32_t b) const { return (a < b) == (edge_forward_[e] != 0); }
+
+  void place (std::uint32_t c, const Triangle& t)
+  {
+    placed_[c] = static_cast<std::uint32_t> (triangles_.size ());
+    triangles_.push_back (t);
+    ids_.push_back (candidates_[c]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      const SimplexId e = edgeBetween (c, a, b);
+      if (edge_count_[e]++ == 0)
+      {
+        edge_forward_[e] = a < b;
+        ++open_edges_[a];
+        ++open_edges_[b];
+      }
+      else
+      {
+        --open_edges_[a];
+        --open_edges_[b];
+      }
+      on_[a] = 1;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const SimplexId e = edgeBetween (c, t[k], t[(k + 1) % 3]);
+      if (edge_count_[e] == 1)
+        queueAround (e);
+    }
+  }
+
+  void tryPlace (std::uint32_t c, SimplexId e)
+  {
+    if (edge_count_[e] != 1)
+      return;
+    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+    const std::uint32_t* ev = complex_.vertices (1, e);
+    std::uint32_t apex = v[0];
+    for (int k = 0; k < 3; ++k)
+      if (v[k] != ev[0] && v[k] != ev[1])
+        apex = v[k];
+    // Across the front edge from a to b (as the grown triangle there goes), the new triangle goes
+    // from b to a: consistently oriented.
+    const std::uint32_t a = traverses (e, ev[0], ev[1]) ? ev[0] : ev[1], b = a == ev[0] ? ev[1] : ev[0];
+    const Triangle t{b, a, apex};
+    const SimplexId ac = edgeBetween (c, a, apex), cb = edgeBetween (c, apex, b);
+    if (edge_count_[ac] >= 2 || edge_count_[cb] >= 2)
+      return;
+    if ((edge_count_[ac] == 1 && !traverses (ac, apex, a)) || (edge_count_[cb] == 1 && !traverses (cb, b, apex)))
+      return;
+    if (on_[apex])
+    {
+      if (c >= extra_from_)
+        return; // a triangle around a dangling edge only brings its point on
+      if (edge_count_[ac] == 0 && edge_count_[cb] == 0)
+      {
+        if (open_edges_[apex] == 0)
+          return; // its fans are closed: a second would never join them
+        touched_.push_back (apex);
+      }
+    }
+    place (c, t);
+  }
+
+  const SimplicialComplex& complex_;
+  const std::vector<Point3>& positions_;
+  std::vector<double> spacing_;       // per vertex: see measureSpacing() (0: on no edge of W)
+  std::vector<SimplexId> candidates_; // triangle ids: W's, then those around its dangling edges
+  std::uint32_t extra_from_ = 0;
+  std::vector<std::uint32_t> edge_start_, edge_candidates_;
+  std::vector<std::uint8_t> edge_count_, edge_forward_; // per edge: grown triangles on it; the one's direction
+  std::vector<std::uint8_t> on_;                        // per vertex: on a grown triangle
+  std::vector<std::uint32_t> open_edges_;               // per vertex: its grown edges on one triangle
+  std::vector<std::uint32_t> placed_;                   // per candidate: its place in triangles_, or NONE
+  std::vector<Triangle> triangles_;                     // grown, oriented
+  std::vector<SimplexId> ids_;
+  std::vector<std::uint32_t> touched_; // points a triangle touched where its front met itself
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> fill_partner_; // (filling triangle, one on its hole)
+  std::priority_queue<Entry> queue_;
+};
+
+void
+SheetGrowth::dropExtraFans ()
+{
+  if (touched_.empty ())
+    return;
+  const std::uint32_t nv = complex_.numVertices ();
+  std::vector<std::uint8_t> dropped (triangles_.size (), 0);
+  // Per vertex, its grown triangles.
+  std::vector<std::uint32_t> start (nv + 1, 0), around (3 * triangles_.size ());
+  for (const Triangle& t : triangles_)
+    for (std::uint32_t v : t)
+      ++start[v + 1];
+  for (std::uint32_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
+  {
+    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
+    for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+      for (std::uint32_t v : triangles_[i])
+        around[at[v]++] = i;
+  }
+  std::vector<std::uint32_t> work = std::move (touched_), fan, members;
+  std::sort (work.begin (), work.end ());
+  work.erase (std::unique (work.begin (), work.end ()), work.end ());
+  while (!work.empty ())
+  {
+    const std::uint32_t v = work.back ();
+    work.pop_back ();
+    // The fans at v: its triangles joined across the edges at v, by labels spread to a fixpoint.
+    members.clear ();
+    for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+      if (!dropped[around[k]])
+        members.push_back (around[k]);
+    fan.assign (members.size (), NONE);
+    std::uint32_t fans = 0;
+    const auto shares_edge_at_v = [&] (const Triangle& p, const Triangle& q) {
+      for (std::uint32_t a : p)
+        if (a != v && (q[0] == a || q[1] == a || q[2] == a))
+          return true;
+      return false;
+    };
+    for (std::size_t i = 0; i < members.size (); ++i)
+    {
+      if (fan[i] != NONE)
+        continue;
+      fan[i] = fans;
+      std::vector<std::size_t> stack{i};
+      while (!stack.empty ())
+      {
+        const std::size_t p = stack.back ();
+        stack.pop_back ();
+        for (std::size_t q = 0; q < members.size (); ++q)
+          if (fan[q] == NONE && shares_edge_at_v (triangles_[members[p]], triangles_[members[q]]))
+          {
+            fan[q] = fans;
+            stack.push_back (q);
+          }
+      }
+      ++fans;
+    }
+    if (fans < 2)
+      continue;
+    std::vector<std::uint32_t> size (fans, 0);
+    for (std::uint32_t f : fan)
+      ++size[f];
+    const auto largest = static_cast<std::uint32_t> (std::max_element (size.begin (), size.end ()) - size.begin ());
+    for (std::size_t i = 0; i < members.size (); ++i)
+      if (fan[i] != largest)
+      {
+        dropped[members[i]] = 1;
+        for (std::uint32_t u : triangles_[members[i]])
+          if (u != v)
+            work.push_back (u); // its fans may have come apart
+      }
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < triangles_.size (); ++i)
+    if (!dropped[i])
+    {
+      triangles_[kept] = triangles_[i];
+      ids_[kept++] = ids_[i];
+    }
+  triangles_.resize (kept);
+  ids_.resize (kept);
+}
+
+void
+SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
+{
+  std::vector<std::uint32_t> sheet_index (complex_.size (2), NONE);
+  for (std::uint32_t i = 0; i < ids_.size (); ++i)
+    sheet_index[ids_[i]] = i;
+  Star star;
+  for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
+  {
+    if (on_[v] || spacing_[v] == 0 || tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+      continue;
+    tetrahedra.gatherStar (v, star);
+    std::uint32_t best = NONE, best_tetrahedron = 0;
+    double best_size = 0;
+    for (std::uint32_t t : star.tetrahedra ())
+    {
+      int apex = 0;
+      while (tetrahedra.vertex (t, apex) != v)
+        ++apex;
+      const std::uint32_t i = sheet_index[complex_.facet (3, t, apex).id];
+      if (i == NONE)
+        continue;
+      const Triangle& abc = triangles_[i];
+      double size = 0;
+      bool gap = false;
+      for (std::uint32_t a : abc)
+      {
+        gap = gap || edgeSpansGap (a, v);
+        size = std::max (size, distance (a, v));
+      }
+      if (!gap && (best == NONE || size < best_size))
+      {
+        best = i;
+        best_tetrahedron = t;
+        best_size = size;
+      }
+    }
+    if (best == NONE)
+      continue;
+    const Triangle abc = triangles_[best];
+    const auto facetWithout = [&] (std::uint32_t u) {
+      int k = 0;
+      while (tetrahedra.vertex (best_tetrahedron, k) != u)
+        ++k;
+      return complex_.facet (3, best_tetrahedron, k).id;
+    };
+    sheet_index[ids_[best]] = NONE;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Triangle tent{abc[k], abc[(k + 1) % 3], v};
+      const SimplexId id = facetWithout (abc[(k + 2) % 3]);
+      const std::uint32_t at = k == 0 ? best : static_cast<std::uint32_t> (triangles_.size ());
+      if (k == 0)
+      {
+        triangles_[at] = tent;
+        ids_[at] = id;
+      }
+      else
+      {
+        triangles_.push_back (tent);
+        ids_.push_back (id);
+      }
+      sheet_index[id] = at;
+    }
+    on_[v] = 1;
+  }
+}
+
+void
+SheetGrowth::fillSmallHoles ()
+{
+  // The boundary of the sheets as a successor per vertex: out[a] = b for an edge a -> b of one
+  // triangle only; each vertex of a manifold sheet has at most one, so the loops are simple.
+  std::unordered_map<std::uint64_t, std::uint32_t> uses; // edge -> triangles on it
+  const auto key = [] (std::uint32_t a, std::uint32_t b) {
+    return (std::uint64_t (std::min (a, b)) << 32) | std::max (a, b);
+  };
+  for (const Triangle& t : triangles_)
+    for (int k = 0; k < 3; ++k)
+      ++uses[key (t[k], t[(k + 1) % 3])];
+  std::unordered_map<std::uint32_t, std::uint32_t> out, triangle_of;
+  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (uses[key (triangles_[i][k], triangles_[i][(k + 1) % 3])] == 1)
+      {
+        out[triangles_[i][k]] = triangles_[i][(k + 1) % 3];
+        triangle_of[triangles_[i][k]] = i;
+      }
+  std::unordered_set<std::uint32_t> visited;
+  std::vector<std::uint32_t> loop;
+  for (const auto& start : out)
+  {
+    if (visited.count (start.first))
+      continue;
+    loop.clear ();
+    std::uint32_t v = start.first;
+    while (!visited.count (v) && loop.size () <= MAX_HOLE_EDGES)
+    {
+      visited.insert (v);
+      loop.push_back (v);
+      const auto next = out.find (v);
+      if (next == out.end ())
+        break;
+      v = next->second;
+    }
+    if (v != start.first || loop.size () < 3 || loop.size () > MAX_HOLE_EDGES)
+      continue; // not closed here, or too long
+    // No longer round than a hole as wide as a gap the sampling resolves, at the loop's widest
+    // spacing.
+    double widest = 0, perimeter = 0;
+    for (std::size_t k = 0; k < loop.size (); ++k)
+    {
+      widest = std::max (widest, spacing_[loop[k]]);
+      perimeter += distance (loop[k], loop[(k + 1) % loop.size ()]);
+    }
+    if (perimeter > M_PI * GAP_SPACINGS * widest)
+      continue;
+    if (loop.size () == 3)
+    {
+      const Triangle& lone = triangles_[triangle_of[loop[0]]];
+      if (std::is_permutation (lone.begin (), lone.end (), loop.begin ()))
+        continue; // the boundary of a lone triangle, no hole
+    }
+    // Ear clipping, the ear with the shortest new edge first; the loop's edges are traversed the
+    // other way round by the filling, so it runs through the loop backwards.
+    std::vector<std::uint32_t> polygon (loop.rbegin (), loop.rend ());
+    std::vector<Triangle> ears;
+    bool fits = true;
+    while (polygon.size () > 3 && fits)
+    {
+      std::size_t best = polygon.size ();
+      double shortest = 0;
+      for (std::size_t i = 0; i < polygon.size (); ++i)
+      {
+        const std::uint32_t p = polygon[(i + polygon.size () - 1) % polygon.size ()],
+                            r = polygon[(i + 1) % polygon.size ()];
+        if (uses.count (key (p, r)))
+          continue; // an edge already: it would join three triangles
+        if (best == polygon.size () || distance (p, r) < shortest)
+        {
+          best = i;
+          shortest = distance (p, r);
+        }
+      }
+      if (best == polygon.size ())
+        fits = false;
+      else
+      {
+        const std::size_t n = polygon.size ();
+        const std::uint32_t p = polygon[(best + n - 1) % n], q = polygon[best], r = polygon[(best + 1) % n];
+        ears.push_back ({p, q, r});
+        ++uses[key (p, r)];
+        polygon.erase (polygon.begin () + std::ptrdiff_t (best));
+      }
+    }
+    if (!fits)
+      continue; // the diagonals it would add are taken: left open
+    ears.push_back ({polygon[0], polygon[1], polygon[2]});
+    for (const Triangle& t : ears)
+    {
+      fill_partner_.push_back ({static_cast<std::uint32_t> (triangles_.size ()), triangle_of[loop[0]]});
+      triangles_.push_back (t);
+      ids_.push_back (NO_ID);
+    }
+  }
+}
+
+template <typename Facing>
+Boundary
+SheetGrowth::orientedSheets (const Facing& facing)
+{
+  // Connected sheets: triangles joined across the edges they share, by union-find over edges.
+  const std::size_t n = triangles_.size ();
+  std::vector<std::uint32_t> parent (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    parent[i] = i;
+  const auto find = [&] (std::uint32_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::fill (edge_forward_.begin (), edge_forward_.end (), 0);
+  std::vector<std::uint32_t> first_on_edge (complex_.size (1), NONE);
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3 && ids_[i] != NO_ID; ++k)
+    {
+      const SimplexId e = edgesOf (complex_, ids_[i])[k];
+      if (first_on_edge[e] == NONE)
+        first_on_edge[e] = i;
+      else
+        parent[find (i)] = find (first_on_edge[e]);
+    }
+  for (const auto& [filling, partner] : fill_partner_)
+    parent[find (filling)] = find (partner);
+  std::vector<std::pair<double, double>> vote (n, {0.0, 0.0});
+  for (std::uint32_t i = 0; i < n; ++i)
+  {
+    const std::pair<double, double> f = facing (triangles_[i], ids_[i]);
+    vote[find (i)].first += f.first;
+    vote[find (i)].second += f.second;
+  }
+  Boundary out;
+  out.triangles = std::move (triangles_);
+  out.triangle_ids = std::move (ids_);
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (vote[find (i)] < std::pair<double, double> (0.0, 0.0))
+      std::swap (out.triangles[i][1], out.triangles[i][2]);
+  return out;
+}
+
+} // namespace
+
+Boundary
+openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions, const Boundary& solid,
+           const std::optional<Point3>& viewpoint)
+{
+  const SimplicialComplex& complex = tetrahedra.complex ();
+  SheetGrowth growth (tetrahedra, w, positions);
+  growth.grow ();
+  growth.dropExtraFans ();
+  growth.detourThroughMissedPoints (tetrahedra);
+  growth.fillSmallHoles ();
+  if (viewpoint)
+    return growth.orientedSheets ([&] (const Triangle& t, SimplexId) {
+      const std::array<double, 3> n = areaNormal (t, positions);
+      double facing = 0;
+      for (int k = 0; k < 3; ++k)
+        facing += n[k] * ((*viewpoint)[k] - (positions[t[0]][k] + positions[t[1]][k] + positions[t[2]][k]) / 3);
+      return std::pair (facing, 0.0);
+    });
+  // Per triangle of the complex on the solid's surface: 1 as it goes there in ascending vertex
+  // order up to an even permutation, 2 odd.
+  std::vector<std::uint8_t> solid_order (complex.size (2), 0);
+  for (std::size_t i = 0; i < solid.triangles.size (); ++i)
+    solid_order[solid.triangle_ids[i]] = evenOrder (solid.triangles[i]) ? 1 : 2;
+  return growth.orientedSheets ([&] (const Triangle& t, SimplexId id) {
+    const std::array<double, 3> n = areaNormal (t, positions);
+    const double area = std::sqrt (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const std::uint8_t order = id == NO_ID ? 0 : solid_order[id];
+    const double out_of_solid = order == 0 ? 0.0 : (order == 1) == evenOrder (t) ? area : -area;
+    return std::pair (n[2], out_of_solid);
+  });
+}
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "delaunay/tetrahedra.h"
+#include "wrap/boundary.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief The surface of a single layer (a terrain, a scan seen from one side): one open,
+  * oriented 2-manifold with boundary through the points, each point once.
+  *
+  * Wrap's X of such a sample is the layer itself (the paper's Figure 3), a sheet of triangles that
+  * thickens into tetrahedra where the points are noisy; its boundary W has the sheet's triangles
+  * once and the thick parts' triangles on both sides. The sheet is grown from one of W's triangles
+  * across the edges it reaches, one triangle at a time, keeping every edge on at most two
+  * triangles traversed both ways:
+  * - first the triangles that fill a notch of the front (two of their edges on it), so that the
+  *   front stays short and meets itself rarely;
+  * - then those that bring a new point, smallest first: at a thick part, the side through more of
+  *   its points;
+  * - then the rest.
+  * A point on W by a dangling edge alone is brought on by the smallest Delaunay triangle around
+  * that edge that fits the front. A triangle may touch the front at a point where the front meets
+  * itself; where the fans around a point do not join into one by the end, all but the largest are
+  * dropped. A W triangle the growth does not reach seeds a sheet of its own (a separate part).
+  *
+  * A triangle with an edge longer than 3.5 times the spacing at both of its ends (the length of
+  * their third-shortest edges in W) spans a gap the sampling resolves and is left out: separate
+  * parts stay apart. A point of W the sheets miss gets a tent: a sheet triangle that is a facet of a
+  * Delaunay tetrahedron with the point as its apex is replaced by the other three facets.
+  *
+  * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
+  * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
+  * with their convex hull (the labelled solid's boundary \a solid).
+  * \param[in] tetrahedra attached to their complex
+  * \param[in] w the boundary of X, with its triangles' ids
+  * \param[in] solid the labelled solid's boundary, with its triangles' ids, oriented outwards */
+Boundary
+openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions, const Boundary& solid,
+           const std::optional<Point3>& viewpoint);
+
+} // namespace pcl_wrap::detail

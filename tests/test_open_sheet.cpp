@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+// The default surface of a single layer (a terrain, a scan seen from one side): one open, oriented
+// 2-manifold with boundary through the points, each point once, facing the viewer or up.
+#include "support/samplers.h"
+#include "support/topology.h"
+#include "support/wrap_checks.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+
+namespace
+{
+
+using namespace pcl_wrap;
+using namespace pcl_wrap::test;
+
+std::vector<Triangle>
+trianglesOf (const WrapResult& r)
+{
+  return {r.surface.triangles.begin (), r.surface.triangles.end ()};
+}
+
+/** The sum of the triangles' area vectors: which way the surface faces. */
+std::array<double, 3>
+facing (const std::vector<Point3>& p, const WrapResult& r)
+{
+  std::array<double, 3> sum{0, 0, 0};
+  for (const auto& t : r.surface.triangles)
+  {
+    const Point3 &a = p[t[0]], &b = p[t[1]], &c = p[t[2]];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    sum[0] += u[1] * v[2] - u[2] * v[1];
+    sum[1] += u[2] * v[0] - u[0] * v[2];
+    sum[2] += u[0] * v[1] - u[1] * v[0];
+  }
+  return sum;
+}
+
+/** The default output of \a points is one open sheet: single layer, an oriented 2-manifold with
+  * boundary, no duplicate triangles, no copies, \a components pieces (with \a fragments, pieces
+  * of fewer than ten points besides), at least \a share of the points on it. */
+WrapResult
+expectOpenSheet (const std::vector<Point3>& points, std::size_t components, double share,
+                 const WrapParameters& parameters = WrapParameters (), std::size_t fragments = 0)
+{
+  const WrapResult r = computeWrap (points, parameters);
+  EXPECT_TRUE (r.statistics.single_layer);
+  EXPECT_TRUE (r.copies.empty ()) << "a point copied";
+  const OpenSurfaceReport s = describeOpenSurface (trianglesOf (r));
+  EXPECT_TRUE (s.manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_TRUE (s.no_duplicate_triangles);
+  EXPECT_GT (s.boundary_edges, 0u) << "open";
+  if (fragments == 0)
+    EXPECT_EQ (s.components, components);
+  else
+  {
+    EXPECT_LE (s.components, components + fragments);
+    EXPECT_GE (s.largest_component_vertices + 10 * fragments, s.vertices);
+  }
+  const std::size_t on = pointsOnSurface (r, points.size ()).size ();
+  EXPECT_GE (double (on), share * double (points.size ())) << on << " of " << points.size () << " points on it";
+  return r;
+}
+
+/** Median spacing of a uniform sample of n points over [-1, 1]^2. */
+double
+spacing (std::size_t n)
+{
+  return 2.0 / std::sqrt (double (n));
+}
+
+TEST (OpenSheet, SmoothTerrainIsOneDiscFacingUp)
+{
+  const std::vector<Point3> terrain = terrainSample (20000, 1);
+  const WrapResult r = expectOpenSheet (terrain, 1, 0.999);
+  // A disc, but for a hole or a few where the growth passed by triangles it could not place.
+  const long euler = describeOpenSurface (trianglesOf (r)).euler;
+  EXPECT_LE (euler, 1);
+  EXPECT_GE (euler, -3);
+  EXPECT_GT (facing (terrain, r)[2], 0.0) << "a height field faces up";
+}
+
+TEST (OpenSheet, NoisyTerrainStaysOneSheet)
+{
+  // Noise across the layer of a fifth of the spacing: X thickens into tetrahedra here and there,
+  // and the sheet passes each thick part on the side with more of its points, with a tent to
+  // the points left below it.
+  std::vector<Point3> terrain = terrainSample (20000, 2);
+  std::mt19937_64 random (7);
+  std::normal_distribution<double> noise (0.0, 0.2 * spacing (terrain.size ()));
+  for (Point3& p : terrain)
+    p[2] += noise (random);
+  // A thick part may leave a triangle or two apart from the sheet.
+  const WrapResult r = expectOpenSheet (terrain, 1, 0.999, WrapParameters (), 2);
+  EXPECT_GT (facing (terrain, r)[2], 0.0);
+}
+
+TEST (OpenSheet, CliffAndOverhangStayOneSheet)
+{
+  // A step of 0.3 at x = 0.2, its face leaning over by 0.05: the sheet runs up the face.
+  std::mt19937_64 random (3);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::vector<Point3> points;
+  for (int i = 0; i < 15000; ++i)
+  {
+    const double x = u (random), y = u (random);
+    points.push_back ({x, y, x > 0.2 ? 0.3 : 0.0});
+  }
+  for (int i = 0; i < 1200; ++i) // the face, leaning out over the low ground
+  {
+    const double s = 0.5 * (u (random) + 1), y = u (random);
+    points.push_back ({0.2 - 0.05 * s, y, 0.3 * s});
+  }
+  const WrapResult r = expectOpenSheet (points, 1, 0.995);
+  EXPECT_GT (facing (points, r)[2], 0.0);
+}
+
+TEST (OpenSheet, SeparatePatchesStaySeparate)
+{
+  // Two terrain patches with a gap of ten spacings between them: two sheets, no triangle across.
+  std::vector<Point3> points = terrainSample (10000, 4);
+  const double gap = 10 * spacing (10000);
+  for (Point3& p : points)
+    if (p[0] > 0)
+      p[0] += gap;
+  const WrapResult r = expectOpenSheet (points, 2, 0.999);
+  for (const auto& t : r.surface.triangles)
+  {
+    int right = 0;
+    for (PointIndex v : t)
+      right += points[v][0] > 0;
+    EXPECT_TRUE (right == 0 || right == 3) << "a triangle across the gap";
+  }
+}
+
+TEST (OpenSheet, OneSidedScanFacesOutOrTheViewpoint)
+{
+  // The upper half of a sphere, seen from outside: a dome whose convex hull closes it.
+  std::vector<Point3> dome;
+  for (const Point3& p : sphereSample (20000, 5, 0.0))
+    if (p[2] > 0.1)
+      dome.push_back (p);
+  const WrapResult out = expectOpenSheet (dome, 1, 0.999);
+  EXPECT_GT (facing (dome, out)[2], 0.0) << "away from the solid the hull closes: outwards";
+
+  WrapParameters from_inside;
+  from_inside.viewpoint = std::array<double, 3>{0.0, 0.0, 0.0};
+  const WrapResult in = expectOpenSheet (dome, 1, 0.999, from_inside);
+  EXPECT_LT (facing (dome, in)[2], 0.0) << "towards a viewpoint inside";
+  std::set<Triangle> flipped;
+  for (auto t : in.surface.triangles)
+    flipped.insert ({t[0], t[2], t[1]});
+  for (const auto& t : out.surface.triangles)
+    EXPECT_TRUE (flipped.count ({t[0], t[1], t[2]}) || flipped.count ({t[1], t[2], t[0]}) ||
+                 flipped.count ({t[2], t[0], t[1]}))
+        << "the same triangles, turned over";
+}
+
+TEST (OpenSheet, ClosedOutputKeepsTheTwoSidedShell)
+{
+  const std::vector<Point3> terrain = terrainSample (3000, 6);
+  WrapParameters closed;
+  closed.output = Output::closed;
+  const WrapResult r = computeWrap (terrain, closed);
+  EXPECT_TRUE (r.statistics.single_layer);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_FALSE (r.copies.empty ()) << "points copied per side";
+}
+
+TEST (OpenSheet, ClosedObjectsAreNotSheets)
+{
+  const std::vector<Point3> sphere = sphereSample (5000, 7);
+  const WrapResult r = computeWrap (sphere);
+  EXPECT_FALSE (r.statistics.single_layer);
+  EXPECT_TRUE (describeSurface (trianglesOf (r)).closed_manifold);
+  WrapParameters closed;
+  closed.output = Output::closed;
+  EXPECT_EQ (trianglesOf (computeWrap (sphere, closed)), trianglesOf (r)) << "closed changes single layers only";
+}
+
+TEST (OpenSheet, ANonFiniteViewpointIsRefused)
+{
+  WrapParameters p;
+  p.viewpoint = std::array<double, 3>{0.0, std::nan (""), 0.0};
+  EXPECT_THROW (computeWrap (terrainSample (100, 8), p), std::invalid_argument);
+}
+
+} // namespace
