@@ -79,8 +79,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     // One open sheet through the points (a curve, with no triangle in X, is W below).
     stats.single_layer = true;
     Output out;
-    out.w = openSheet (adjacency_, extractBoundary (complex, x), positions,
-                       extractSolidBoundary (adjacency_, labels.inside), viewpoint);
+    out.w = openSheet (adjacency_, extractBoundary (complex, x), positions, labels.inside, viewpoint);
     clock.stageDone ("sheet");
     return out;
   }

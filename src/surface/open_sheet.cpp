@@ -2,13 +2,13 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/open_sheet.h"
 
+#include "util/parallel_for_each.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <queue>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -62,9 +62,12 @@ public:
       open_edges_ (complex_.numVertices (), 0)
   {
     measureSpacing (w);
-    for (SimplexId id : w.triangle_ids)
-      if (!spansGap (complex_.vertices (2, id)))
-        candidates_.push_back (id);
+    std::vector<std::uint8_t> across_gap (w.triangle_ids.size ());
+    parallelForEach (across_gap.size (),
+                     [&] (std::size_t i) { across_gap[i] = spansGap (complex_.vertices (2, w.triangle_ids[i])); });
+    for (std::size_t i = 0; i < across_gap.size (); ++i)
+      if (!across_gap[i])
+        candidates_.push_back (w.triangle_ids[i]);
     extra_from_ = static_cast<std::uint32_t> (candidates_.size ());
     addTrianglesAroundDanglingEdges (tetrahedra, w);
     // Per edge, the candidates on it, as offsets into one array.
@@ -91,10 +94,19 @@ public:
       if (placed_[seed] != NONE || on_[v[0]] || on_[v[1]] || on_[v[2]])
         continue;
       place (seed, {v[0], v[1], v[2]});
-      while (!queue_.empty ())
+      while (!notches_.empty () || !queue_.empty ())
       {
-        const Entry e = queue_.top ();
-        queue_.pop ();
+        Entry e;
+        if (!notches_.empty ())
+        {
+          e = notches_.back ();
+          notches_.pop_back ();
+        }
+        else
+        {
+          e = queue_.top ();
+          queue_.pop ();
+        }
         if (placed_[e.candidate] == NONE)
           tryPlace (e.candidate, e.edge);
       }
@@ -116,9 +128,10 @@ public:
   void dropExtraFans ();
 
   /** The grown triangles, each connected sheet turned so that the sum over its triangles of
-    * \a facing (triangle, id), a pair compared in order, is not negative. */
-  template <typename Facing>
-  Boundary orientedSheets (const Facing& facing);
+    * \a facing (triangle) is not negative; where it is 0, the sum of \a tieBreak (triangles,
+    * ids), one value per triangle. */
+  template <typename Facing, typename TieBreak>
+  Boundary orientedSheets (const Facing& facing, const TieBreak& tieBreak);
 
 private:
   struct Entry
@@ -171,27 +184,28 @@ private:
       neighbours[at[b]] = a;
       lengths[at[a]++] = lengths[at[b]++] = distance (a, b);
     }
-    std::vector<double> third (nv, 0.0), scratch;
-    for (std::uint32_t v = 0; v < nv; ++v)
-      if (start[v] < start[v + 1])
-      {
-        scratch.assign (lengths.begin () + start[v], lengths.begin () + start[v + 1]);
-        const auto k = scratch.begin () + std::min<std::ptrdiff_t> (2, std::ptrdiff_t (scratch.size ()) - 1);
-        std::nth_element (scratch.begin (), k, scratch.end ());
-        third[v] = *k;
-      }
+    std::vector<double> third (nv, 0.0);
+    parallelForEach (nv, [&] (std::size_t v) {
+      if (start[v] == start[v + 1])
+        return;
+      const auto first = lengths.begin () + start[v], last = lengths.begin () + start[v + 1];
+      const auto k = first + std::min<std::ptrdiff_t> (2, last - first - 1);
+      std::nth_element (first, k, last);
+      third[v] = *k;
+    });
     // A point at a rim, with few edges in the sheet, takes its neighbours' spacing where that is less.
     spacing_.assign (nv, 0.0);
-    for (std::uint32_t v = 0; v < nv; ++v)
-      if (start[v] < start[v + 1])
-      {
-        scratch.clear ();
-        for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
-          scratch.push_back (third[neighbours[k]]);
-        const auto middle = scratch.begin () + std::ptrdiff_t (scratch.size ()) / 2;
-        std::nth_element (scratch.begin (), middle, scratch.end ());
-        spacing_[v] = std::min (third[v], *middle);
-      }
+    parallelForEach (nv, [&] (std::size_t v) {
+      if (start[v] == start[v + 1])
+        return;
+      thread_local std::vector<double> scratch;
+      scratch.clear ();
+      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+        scratch.push_back (third[neighbours[k]]);
+      const auto middle = scratch.begin () + std::ptrdiff_t (scratch.size ()) / 2;
+      std::nth_element (scratch.begin (), middle, scratch.end ());
+      spacing_[v] = std::min (third[v], *middle);
+    });
   }
 
   /** Does an edge of the triangle \a v span a gap the sampling resolves: longer than
@@ -259,7 +273,10 @@ private:
       const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
       const bool brings_new = !on_[v[0]] || !on_[v[1]] || !on_[v[2]];
       const std::uint8_t kind = on_front >= 2 ? 0 : brings_new ? 1 : 2;
-      queue_.push ({kind, sizeOf (c), c, e});
+      if (kind == 0)
+        notches_.push_back ({kind, 0.0f, c, e}); // placed at once, in any order: each closes a notch
+      else
+        queue_.push ({kind, sizeOf (c), c, e});
     }
   }
 
@@ -354,7 +371,8 @@ private:
   std::vector<SimplexId> ids_;
   std::vector<std::uint32_t> touched_; // points a triangle touched where its front met itself
   std::vector<std::pair<std::uint32_t, std::uint32_t>> fill_partner_; // (filling triangle, one on its hole)
-  std::priority_queue<Entry> queue_;
+  std::vector<Entry> notches_;                                        // candidates with two edges on the front
+  std::priority_queue<Entry> queue_;                                  // the others
 };
 
 void
@@ -513,41 +531,71 @@ SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
 void
 SheetGrowth::fillSmallHoles ()
 {
-  // The boundary of the sheets as a successor per vertex: out[a] = b for an edge a -> b of one
-  // triangle only; each vertex of a manifold sheet has at most one, so the loops are simple.
-  std::unordered_map<std::uint64_t, std::uint32_t> uses; // edge -> triangles on it
-  const auto key = [] (std::uint32_t a, std::uint32_t b) {
-    return (std::uint64_t (std::min (a, b)) << 32) | std::max (a, b);
-  };
+  // The sheets' triangles per edge and per vertex; every triangle so far is a Delaunay face.
+  const std::uint32_t nv = complex_.numVertices ();
+  std::fill (edge_count_.begin (), edge_count_.end (), 0);
+  for (SimplexId id : ids_)
+    for (SimplexId e : edgesOf (complex_, id))
+      ++edge_count_[e];
+  std::vector<std::uint32_t> start (nv + 1, 0), around (3 * triangles_.size ());
   for (const Triangle& t : triangles_)
-    for (int k = 0; k < 3; ++k)
-      ++uses[key (t[k], t[(k + 1) % 3])];
-  std::unordered_map<std::uint32_t, std::uint32_t> out, triangle_of;
-  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
-    for (int k = 0; k < 3; ++k)
-      if (uses[key (triangles_[i][k], triangles_[i][(k + 1) % 3])] == 1)
-      {
-        out[triangles_[i][k]] = triangles_[i][(k + 1) % 3];
-        triangle_of[triangles_[i][k]] = i;
-      }
-  std::unordered_set<std::uint32_t> visited;
-  std::vector<std::uint32_t> loop;
-  for (const auto& start : out)
+    for (std::uint32_t v : t)
+      ++start[v + 1];
+  for (std::uint32_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
   {
-    if (visited.count (start.first))
+    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
+    for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+      for (std::uint32_t v : triangles_[i])
+        around[at[v]++] = i;
+  }
+  // The boundary as a successor per vertex: out[a] = b for an edge a -> b of one triangle only;
+  // each vertex of a manifold sheet has at most one, so the loops are simple.
+  std::vector<std::uint32_t> out (nv, NONE), triangle_of (nv, NONE);
+  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+  {
+    const Triangle& t = triangles_[i];
+    const std::uint32_t* v = complex_.vertices (2, ids_[i]);
+    const std::array<SimplexId, 3> e = edgesOf (complex_, ids_[i]);
+    for (int k = 0; k < 3; ++k)
+      if (edge_count_[e[k]] == 1)
+      {
+        // Edge k of the complex's triangle joins its vertices k and k + 1; the sheet's triangle
+        // goes from a to b along it.
+        const std::uint32_t a = v[k], b = v[(k + 1) % 3];
+        const bool forward = (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+        out[forward ? a : b] = forward ? b : a;
+        triangle_of[forward ? a : b] = i;
+      }
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> diagonals; // added to this hole, as (lower, higher)
+  const auto joined = [&] (std::uint32_t p, std::uint32_t r) {
+    for (std::uint32_t k = start[p]; k < start[p + 1]; ++k)
+    {
+      const Triangle& t = triangles_[around[k]];
+      if (t[0] == r || t[1] == r || t[2] == r)
+        return true;
+    }
+    return std::find (diagonals.begin (), diagonals.end (), std::pair (std::min (p, r), std::max (p, r))) !=
+           diagonals.end ();
+  };
+  std::vector<std::uint8_t> visited (nv, 0);
+  std::vector<std::uint32_t> loop, polygon;
+  std::vector<Triangle> ears;
+  // Holes do not share a vertex (each has one successor): a diagonal matters within its hole only.
+  for (std::uint32_t first = 0; first < nv; ++first)
+  {
+    if (out[first] == NONE || visited[first])
       continue;
     loop.clear ();
-    std::uint32_t v = start.first;
-    while (!visited.count (v) && loop.size () <= MAX_HOLE_EDGES)
+    std::uint32_t v = first;
+    while (v != NONE && !visited[v] && loop.size () <= MAX_HOLE_EDGES)
     {
-      visited.insert (v);
+      visited[v] = 1;
       loop.push_back (v);
-      const auto next = out.find (v);
-      if (next == out.end ())
-        break;
-      v = next->second;
+      v = out[v];
     }
-    if (v != start.first || loop.size () < 3 || loop.size () > MAX_HOLE_EDGES)
+    if (v != first || loop.size () < 3 || loop.size () > MAX_HOLE_EDGES)
       continue; // not closed here, or too long
     // No longer round than a hole as wide as a gap the sampling resolves, at the loop's widest
     // spacing.
@@ -567,38 +615,32 @@ SheetGrowth::fillSmallHoles ()
     }
     // Ear clipping, the ear with the shortest new edge first; the loop's edges are traversed the
     // other way round by the filling, so it runs through the loop backwards.
-    std::vector<std::uint32_t> polygon (loop.rbegin (), loop.rend ());
-    std::vector<Triangle> ears;
-    bool fits = true;
-    while (polygon.size () > 3 && fits)
+    polygon.assign (loop.rbegin (), loop.rend ());
+    ears.clear ();
+    diagonals.clear ();
+    while (polygon.size () > 3)
     {
-      std::size_t best = polygon.size ();
+      const std::size_t n = polygon.size ();
+      std::size_t best = n;
       double shortest = 0;
-      for (std::size_t i = 0; i < polygon.size (); ++i)
+      for (std::size_t i = 0; i < n; ++i)
       {
-        const std::uint32_t p = polygon[(i + polygon.size () - 1) % polygon.size ()],
-                            r = polygon[(i + 1) % polygon.size ()];
-        if (uses.count (key (p, r)))
-          continue; // an edge already: it would join three triangles
-        if (best == polygon.size () || distance (p, r) < shortest)
+        const std::uint32_t p = polygon[(i + n - 1) % n], r = polygon[(i + 1) % n];
+        if (!joined (p, r) && (best == n || distance (p, r) < shortest)) // else three triangles on p r
         {
           best = i;
           shortest = distance (p, r);
         }
       }
-      if (best == polygon.size ())
-        fits = false;
-      else
-      {
-        const std::size_t n = polygon.size ();
-        const std::uint32_t p = polygon[(best + n - 1) % n], q = polygon[best], r = polygon[(best + 1) % n];
-        ears.push_back ({p, q, r});
-        ++uses[key (p, r)];
-        polygon.erase (polygon.begin () + std::ptrdiff_t (best));
-      }
+      if (best == n)
+        break;
+      const std::uint32_t p = polygon[(best + n - 1) % n], q = polygon[best], r = polygon[(best + 1) % n];
+      ears.push_back ({p, q, r});
+      diagonals.push_back ({std::min (p, r), std::max (p, r)});
+      polygon.erase (polygon.begin () + std::ptrdiff_t (best));
     }
-    if (!fits)
-      continue; // the diagonals it would add are taken: left open
+    if (polygon.size () > 3)
+      continue; // the diagonals it needs are edges already: left open
     ears.push_back ({polygon[0], polygon[1], polygon[2]});
     for (const Triangle& t : ears)
     {
@@ -609,9 +651,9 @@ SheetGrowth::fillSmallHoles ()
   }
 }
 
-template <typename Facing>
+template <typename Facing, typename TieBreak>
 Boundary
-SheetGrowth::orientedSheets (const Facing& facing)
+SheetGrowth::orientedSheets (const Facing& facing, const TieBreak& tieBreak)
 {
   // Connected sheets: triangles joined across the edges they share, by union-find over edges.
   const std::size_t n = triangles_.size ();
@@ -636,18 +678,28 @@ SheetGrowth::orientedSheets (const Facing& facing)
     }
   for (const auto& [filling, partner] : fill_partner_)
     parent[find (filling)] = find (partner);
-  std::vector<std::pair<double, double>> vote (n, {0.0, 0.0});
+  std::vector<double> vote (n, 0.0);
   for (std::uint32_t i = 0; i < n; ++i)
+    vote[find (i)] += facing (triangles_[i]);
+  // Only a sheet with no up or down needs the tie broken, by what it asks the solid.
+  bool tied = false;
+  for (std::uint32_t i = 0; i < n && !tied; ++i)
+    tied = find (i) == i && vote[i] == 0;
+  if (tied)
   {
-    const std::pair<double, double> f = facing (triangles_[i], ids_[i]);
-    vote[find (i)].first += f.first;
-    vote[find (i)].second += f.second;
+    const std::vector<double> second = tieBreak (triangles_, ids_);
+    std::vector<double> sum (n, 0.0);
+    for (std::uint32_t i = 0; i < n; ++i)
+      sum[find (i)] += second[i];
+    for (std::uint32_t i = 0; i < n; ++i)
+      if (find (i) == i && vote[i] == 0)
+        vote[i] = sum[i];
   }
   Boundary out;
   out.triangles = std::move (triangles_);
   out.triangle_ids = std::move (ids_);
   for (std::uint32_t i = 0; i < n; ++i)
-    if (vote[find (i)] < std::pair<double, double> (0.0, 0.0))
+    if (vote[find (i)] < 0)
       std::swap (out.triangles[i][1], out.triangles[i][2]);
   return out;
 }
@@ -655,8 +707,8 @@ SheetGrowth::orientedSheets (const Facing& facing)
 } // namespace
 
 Boundary
-openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions, const Boundary& solid,
-           const std::optional<Point3>& viewpoint)
+openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
+           const std::vector<std::uint8_t>& inside, const std::optional<Point3>& viewpoint)
 {
   const SimplicialComplex& complex = tetrahedra.complex ();
   SheetGrowth growth (tetrahedra, w, positions);
@@ -664,26 +716,35 @@ openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Po
   growth.dropExtraFans ();
   growth.detourThroughMissedPoints (tetrahedra);
   growth.fillSmallHoles ();
+  // A sheet with no up or down faces out of the labelled solid: per triangle on its surface, +-area.
+  const auto out_of_solid = [&] (const std::vector<Triangle>& triangles, const std::vector<SimplexId>& ids) {
+    const Boundary solid = extractSolidBoundary (tetrahedra, inside);
+    // Per triangle of the complex on the solid's surface: 1 as it goes there in ascending vertex
+    // order up to an even permutation, 2 odd.
+    std::vector<std::uint8_t> solid_order (complex.size (2), 0);
+    for (std::size_t i = 0; i < solid.triangles.size (); ++i)
+      solid_order[solid.triangle_ids[i]] = evenOrder (solid.triangles[i]) ? 1 : 2;
+    std::vector<double> vote (triangles.size (), 0.0);
+    for (std::size_t i = 0; i < triangles.size (); ++i)
+    {
+      const std::uint8_t order = ids[i] == NO_ID ? 0 : solid_order[ids[i]];
+      const std::array<double, 3> n = areaNormal (triangles[i], positions);
+      const double area = std::sqrt (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      vote[i] = order == 0 ? 0.0 : (order == 1) == evenOrder (triangles[i]) ? area : -area;
+    }
+    return vote;
+  };
   if (viewpoint)
-    return growth.orientedSheets ([&] (const Triangle& t, SimplexId) {
-      const std::array<double, 3> n = areaNormal (t, positions);
-      double facing = 0;
-      for (int k = 0; k < 3; ++k)
-        facing += n[k] * ((*viewpoint)[k] - (positions[t[0]][k] + positions[t[1]][k] + positions[t[2]][k]) / 3);
-      return std::pair (facing, 0.0);
-    });
-  // Per triangle of the complex on the solid's surface: 1 as it goes there in ascending vertex
-  // order up to an even permutation, 2 odd.
-  std::vector<std::uint8_t> solid_order (complex.size (2), 0);
-  for (std::size_t i = 0; i < solid.triangles.size (); ++i)
-    solid_order[solid.triangle_ids[i]] = evenOrder (solid.triangles[i]) ? 1 : 2;
-  return growth.orientedSheets ([&] (const Triangle& t, SimplexId id) {
-    const std::array<double, 3> n = areaNormal (t, positions);
-    const double area = std::sqrt (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const std::uint8_t order = id == NO_ID ? 0 : solid_order[id];
-    const double out_of_solid = order == 0 ? 0.0 : (order == 1) == evenOrder (t) ? area : -area;
-    return std::pair (n[2], out_of_solid);
-  });
+    return growth.orientedSheets (
+        [&] (const Triangle& t) {
+          const std::array<double, 3> n = areaNormal (t, positions);
+          double facing = 0;
+          for (int k = 0; k < 3; ++k)
+            facing += n[k] * ((*viewpoint)[k] - (positions[t[0]][k] + positions[t[1]][k] + positions[t[2]][k]) / 3);
+          return facing;
+        },
+        out_of_solid);
+  return growth.orientedSheets ([&] (const Triangle& t) { return areaNormal (t, positions)[2]; }, out_of_solid);
 }
 
 } // namespace pcl_wrap::detail

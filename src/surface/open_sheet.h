@@ -8,6 +8,7 @@
 #include <pcl_wrap/compute_wrap.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -39,12 +40,11 @@ namespace pcl_wrap::detail
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
-  * with their convex hull (the labelled solid's boundary \a solid).
+  * with their convex hull (the labelled solid, the tetrahedra flagged in \a inside).
   * \param[in] tetrahedra attached to their complex
-  * \param[in] w the boundary of X, with its triangles' ids
-  * \param[in] solid the labelled solid's boundary, with its triangles' ids, oriented outwards */
+  * \param[in] w the boundary of X, with its triangles' ids */
 Boundary
-openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions, const Boundary& solid,
-           const std::optional<Point3>& viewpoint);
+openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
+           const std::vector<std::uint8_t>& inside, const std::optional<Point3>& viewpoint);
 
 } // namespace pcl_wrap::detail
