@@ -382,16 +382,18 @@ def main():
     plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
     lines = report(rows, args, machine)
     # Sections other scripts write: bench/surface_quality.sh's table with its reading, bench/race.py's
-    # time against quality, bench/scaling.py's time and memory per point.
+    # time against quality, bench/scaling.py's time and memory per point (closed shapes and single
+    # layers), bench/single_layers.py's table.
     for section in ("surface_quality.md", "race.md"):
         path = os.path.join(HERE, section)
         if os.path.exists(path):
             at = lines.index("## Against the floor")
             lines[at:at] = open(path).read().rstrip().split("\n") + [""]
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
-    scaling = os.path.join(HERE, "scaling.md")
-    if os.path.exists(scaling):
-        lines += [""] + open(scaling).read().rstrip().split("\n")
+    for section in ("scaling.md", "scaling_single_layers.md", "single_layers.md"):
+        path = os.path.join(HERE, section)
+        if os.path.exists(path):
+            lines += [""] + open(path).read().rstrip().split("\n")
     profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
     if os.path.exists(profile):
         lines += ["", open(profile).read().rstrip()]

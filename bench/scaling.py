@@ -3,14 +3,16 @@
 """Time and memory per point from 10,000 to millions of points.
 
 usage: bench/scaling.py [--sizes 10000,100000,1000000,5000000] [--shapes sphere,torus,cube]
-                        [--largest 10000000] [--timeout 900] [--out bench/scaling.md] [--report-only]
+                        [--largest 10000000] [--timeout 900] [--name scaling] [--report-only]
 
 pcl_wrap's default and raw outputs and CGAL's regular triangulation of the same points (the floor),
 each in a process of its own, once per size, with as much memory as the last peak written and freed
 before each run (see compare.warm_memory). --largest runs pcl_wrap's default output alone on that
 many sphere points. Writes a table (microseconds and bytes of peak resident memory per point) and
-bench/plots/scaling.png: a section of BENCHMARK.md (bench/compare.py puts it there). Needs
-scripts/build.sh first."""
+bench/plots/NAME.png to bench/NAME.md, the measurements to bench/NAME.json: a section of
+BENCHMARK.md (bench/compare.py puts bench/scaling.md there). The single layers:
+`bench/scaling.py --shapes terrain,rough_terrain,half_sphere --largest 0 --name scaling_single_layers`.
+Needs scripts/build.sh first."""
 import argparse
 import json
 import os
@@ -23,6 +25,7 @@ import compare  # noqa: E402
 HERE = compare.HERE
 ROOT = compare.ROOT
 METHODS = ["floor_regular", "pcl_wrap", "pcl_wrap_raw"]
+SHAPE_ORDER = ["sphere", "torus", "cube", "terrain", "rough_terrain", "half_sphere"]
 LABEL = {"floor_regular": "regular triangulation (floor)", "pcl_wrap": "pcl_wrap (default)",
          "pcl_wrap_raw": "pcl_wrap --raw"}
 
@@ -50,7 +53,7 @@ def plot(rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    shapes = sorted({r["shape"] for r in rows}, key=["sphere", "torus", "cube"].index)
+    shapes = sorted({r["shape"] for r in rows}, key=SHAPE_ORDER.index)
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
     for shape, color in zip(shapes, ("tab:blue", "tab:orange", "tab:green")):
         for method, style in (("pcl_wrap", "-o"), ("pcl_wrap_raw", "--s"), ("floor_regular", ":^")):
@@ -74,13 +77,15 @@ def plot(rows, path):
     plt.close(fig)
 
 
-def report(rows, out):
-    picture = os.path.join(HERE, "plots", "scaling.png")
+def report(rows, name):
+    out = os.path.join(HERE, name + ".md")
+    picture = os.path.join(HERE, "plots", name + ".png")
     plot(rows, picture)
-    lines = ["## Time and memory per point", "",
+    single = name != "scaling"
+    lines = ["## Time and memory per point" + (": single layers" if single else ""), "",
              "pcl_wrap's default and raw outputs and CGAL's regular triangulation of the same points, each in",
              "a process of its own, once per size (peak resident memory of that process). Reproduce:",
-             "`scripts/build.sh && bench/scaling.py`.", "",
+             "`scripts/build.sh && bench/scaling.py" + (f" --shapes {','.join(sorted({r['shape'] for r in rows}, key=SHAPE_ORDER.index))} --largest 0 --name {name}" if single else "") + "`.", "",
              f"![]({os.path.relpath(picture, ROOT)})", "",
              "| points | method | s | µs per point | × floor | peak MiB | bytes per point |",
              "|---|---|---|---|---|---|---|"]
@@ -96,7 +101,7 @@ def report(rows, out):
                      f"{r['seconds'] / r['n'] * 1e6:.2f} | {ratio} | {r['peak_mib']:.0f} | "
                      f"{r['peak_mib'] * 2 ** 20 / r['n']:.0f} |")
     largest = max((r for r in rows if r["method"] == "pcl_wrap" and "seconds" in r), key=lambda r: r["n"], default=None)
-    if largest:
+    if largest and not single:
         per_point = largest["peak_mib"] * 2 ** 20 / largest["n"]
         memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
         lines += ["", f"The largest cloud run, {largest['n']:,} sphere points, peaked at {largest['peak_mib'] / 1024:.1f} GiB, "
@@ -113,13 +118,13 @@ def main():
     parser.add_argument("--shapes", default="sphere,torus,cube")
     parser.add_argument("--largest", type=int, default=10000000)
     parser.add_argument("--timeout", type=int, default=900)
-    parser.add_argument("--out", default=os.path.join(HERE, "scaling.md"))
+    parser.add_argument("--name", default="scaling", help="bench/NAME.json, .md and plots/NAME.png")
     parser.add_argument("--report-only", action="store_true", help="rewrite the report from bench/scaling.json")
     args = parser.parse_args()
     args.sizes = [int(s) for s in args.sizes.split(",") if s]
     args.shapes = [s for s in args.shapes.split(",") if s]
-    rows = compare.saved_or_measured(os.path.join(HERE, "scaling.json"), args.report_only, lambda: run(args))
-    report(rows, args.out)
+    rows = compare.saved_or_measured(os.path.join(HERE, args.name + ".json"), args.report_only, lambda: run(args))
+    report(rows, args.name)
 
 
 if __name__ == "__main__":

@@ -392,6 +392,28 @@ TEST_F (Cli, ManifoldOptionAppendsCopiesAndGivesAClosedManifold)
   }
 }
 
+TEST_F (Cli, TerrainIsOneOpenSheetOrClosedWhenAsked)
+{
+  const auto terrain = terrainSample (3000, 2);
+  writeText (DIR + "terrain.xyz", xyzText (terrain));
+  const CliRun sheet = runCli (DIR + "terrain.xyz " + DIR + "sheet.ply");
+  ASSERT_EQ (sheet.status, 0) << sheet.err;
+  pcl::PolygonMesh mesh;
+  ASSERT_GE (pcl::io::loadPLYFile (DIR + "sheet.ply", mesh), 0);
+  EXPECT_EQ (std::size_t (mesh.cloud.width) * mesh.cloud.height, terrain.size ()) << "no point copied";
+  const OpenSurfaceReport open = describeOpenSurface (trianglesOf (mesh.polygons));
+  EXPECT_TRUE (open.manifold);
+  EXPECT_TRUE (open.consistently_oriented);
+  EXPECT_GT (open.boundary_edges, 0u);
+
+  const CliRun closed = runCli (DIR + "terrain.xyz " + DIR + "closed.ply --closed");
+  ASSERT_EQ (closed.status, 0) << closed.err;
+  pcl::PolygonMesh shell;
+  ASSERT_GE (pcl::io::loadPLYFile (DIR + "closed.ply", shell), 0);
+  EXPECT_GT (std::size_t (shell.cloud.width) * shell.cloud.height, terrain.size ()) << "points copied per side";
+  EXPECT_TRUE (describeSurface (trianglesOf (shell.polygons)).closed_manifold);
+}
+
 TEST_F (Cli, UsageErrors)
 {
   // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.
@@ -411,6 +433,11 @@ TEST_F (Cli, UsageErrors)
   const CliRun manifold = runCli (DIR + "ok.xyz " + DIR + "usage.ply --manifold");
   EXPECT_EQ (manifold.status, 2);
   EXPECT_NE (manifold.err.find ("--raw"), std::string::npos) << manifold.err;
+  EXPECT_FALSE (exists (DIR + "usage.ply"));
+  // --closed chooses how the default surface treats a single layer: nothing to choose for --raw.
+  const CliRun closed = runCli (DIR + "ok.xyz " + DIR + "usage.ply --raw --closed");
+  EXPECT_EQ (closed.status, 2);
+  EXPECT_NE (closed.err.find ("--closed"), std::string::npos) << closed.err;
   EXPECT_FALSE (exists (DIR + "usage.ply"));
   // Writing over the input, under its own name or another, is refused and leaves it as it was.
   writeText (DIR + "same.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");

@@ -163,6 +163,22 @@ TEST (OpenSheet, OneSidedScanFacesOutOrTheViewpoint)
         << "the same triangles, turned over";
 }
 
+TEST (OpenSheet, OneSidedScanOfATorusIsOneRing)
+{
+  // The torus seen from above: the upper half of its tube, an annulus. X, contractible, cuts it
+  // somewhere; the sheet closes the cut (a triangle or two may stay apart).
+  std::vector<Point3> top;
+  for (const Point3& p : torusSample (20000, 9))
+  {
+    const double ring = std::sqrt (p[0] * p[0] + p[1] * p[1]);
+    if (p[2] > 0 && ring > 0.75 && ring < 1.25) // the upper half of the tube, away from its sides
+      top.push_back (p);
+  }
+  const WrapResult r = expectOpenSheet (top, 1, 0.999, WrapParameters (), 1);
+  EXPECT_EQ (describeOpenSurface (trianglesOf (r)).largest_component_euler, 0) << "an annulus: the hole stays open";
+  EXPECT_GT (facing (top, r)[2], 0.0);
+}
+
 TEST (OpenSheet, ClosedOutputKeepsTheTwoSidedShell)
 {
   const std::vector<Point3> terrain = terrainSample (3000, 6);

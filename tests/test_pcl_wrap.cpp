@@ -157,6 +157,54 @@ TEST (PclWrap, WeightsFromAVectorOrAPointField)
   EXPECT_TRUE (fails ([&] (auto& w) { w.setWeights (nan_weights); }));
 }
 
+/** A depth image (organised, NaN where nothing came back) is a single layer: one open sheet, no
+  * point copied, so the mesh's cloud keeps the image's width and height, facing the sensor at the
+  * cloud's origin; with the sensor moved behind the wall, the sheet turns to face it. */
+TEST (PclWrap, DepthImageKeepsItsLayoutAndFacesTheSensor)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> (80, 60);
+  for (std::uint32_t r = 0; r < cloud->height; ++r)
+    for (std::uint32_t c = 0; c < cloud->width; ++c)
+    {
+      const float x = (float (c) - 40.f) / 60.f, y = (float (r) - 30.f) / 60.f, depth = 1.5f + 0.05f * std::sin (5 * x);
+      const bool seen = (r * 5 + c * 3) % 13 != 0;
+      const float nan = std::numeric_limits<float>::quiet_NaN ();
+      cloud->at (c, r) = seen ? pcl::PointXYZ (x * depth, y * depth, depth) : pcl::PointXYZ (nan, nan, nan);
+    }
+  cloud->is_dense = false;
+  const auto facing = [&] (const pcl::PolygonMesh& mesh, const Eigen::Vector3f& sensor) {
+    double sum = 0;
+    for (const auto& polygon : mesh.polygons)
+    {
+      const Eigen::Vector3f a = (*cloud)[polygon.vertices[0]].getVector3fMap (),
+                            b = (*cloud)[polygon.vertices[1]].getVector3fMap (),
+                            c = (*cloud)[polygon.vertices[2]].getVector3fMap ();
+      sum += (b - a).cross (c - a).dot (sensor - a);
+    }
+    return sum;
+  };
+  Wrap<pcl::PointXYZ> wrap;
+  wrap.setInputCloud (cloud);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  EXPECT_TRUE (wrap.getResult ().statistics.single_layer);
+  EXPECT_TRUE (wrap.getResult ().copies.empty ());
+  EXPECT_EQ (mesh.cloud.width, cloud->width);
+  EXPECT_EQ (mesh.cloud.height, cloud->height);
+  const OpenSurfaceReport s = describeOpenSurface (trianglesOf (mesh.polygons));
+  EXPECT_TRUE (s.manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  EXPECT_EQ (s.components, 1u);
+  EXPECT_GT (facing (mesh, Eigen::Vector3f::Zero ()), 0.0);
+
+  cloud->sensor_origin_ = Eigen::Vector4f (0.f, 0.f, 5.f, 0.f);
+  pcl::PolygonMesh behind;
+  wrap.setInputCloud (cloud);
+  wrap.reconstruct (behind);
+  EXPECT_GT (facing (behind, Eigen::Vector3f (0.f, 0.f, 5.f)), 0.0);
+  EXPECT_LT (facing (behind, Eigen::Vector3f::Zero ()), 0.0);
+}
+
 /** The manifold option and a region through the PCL class: copies of split points follow the
   * input cloud in the output cloud (an organised cloud then becomes one row), with their fields,
   * and the polygons form a closed 2-manifold; with indices, copies still follow the whole cloud. */

@@ -23,6 +23,8 @@ constexpr std::uint32_t NONE = ~std::uint32_t (0);
 constexpr double GAP_SPACINGS = 3.5;
 /** Holes bounded by more edges are not looked at for filling (the widest fillable is a few spacings). */
 constexpr std::size_t MAX_HOLE_EDGES = 24;
+/** Rounds of tents, each bringing on the points one tetrahedron joins to the sheets. */
+constexpr int MAX_TENT_ROUNDS = 8;
 /** The id of a filling triangle, which need not be a face of the complex. */
 constexpr SimplexId NO_ID = ~SimplexId (0);
 
@@ -70,7 +72,12 @@ public:
         candidates_.push_back (w.triangle_ids[i]);
     extra_from_ = static_cast<std::uint32_t> (candidates_.size ());
     addTrianglesAroundDanglingEdges (tetrahedra, w);
-    // Per edge, the candidates on it, as offsets into one array.
+    indexCandidates ();
+  }
+
+  /** Per edge, the candidates on it, as offsets into one array; the new candidates not placed. */
+  void indexCandidates ()
+  {
     edge_start_.assign (complex_.size (1) + 1, 0);
     for (SimplexId id : candidates_)
       for (SimplexId e : edgesOf (complex_, id))
@@ -82,7 +89,69 @@ public:
     for (std::uint32_t c = 0; c < candidates_.size (); ++c)
       for (SimplexId e : edgesOf (complex_, candidates_[c]))
         edge_candidates_[at[e]++] = c;
-    placed_.assign (candidates_.size (), NONE);
+    placed_.resize (candidates_.size (), NONE);
+  }
+
+  /** Places what the queues hold. */
+  void drain ()
+  {
+    while (!notches_.empty () || !queue_.empty ())
+    {
+      Entry e;
+      if (!notches_.empty ())
+      {
+        e = notches_.back ();
+        notches_.pop_back ();
+      }
+      else
+      {
+        e = queue_.top ();
+        queue_.pop ();
+      }
+      if (placed_[e.candidate] == NONE)
+        tryPlace (e.candidate, e.edge);
+    }
+  }
+
+  /** Closes the cracks between fronts that face each other across less than a gap: X, being
+    * contractible, cuts a ring-shaped layer (an annulus, a terrain around a pond) somewhere, and
+    * W's triangles leave the cut open. The Delaunay triangles whose three points are all on the
+    * front and that span no gap become candidates, and the growth goes on from the front. */
+  void closeCracks (const Tetrahedra& tetrahedra)
+  {
+    std::vector<std::uint8_t> listed (complex_.size (2), 0);
+    for (SimplexId id : candidates_)
+      listed[id] = 1;
+    const auto on_front = [&] (std::uint32_t v) { return open_edges_[v] > 0; };
+    const std::size_t before = candidates_.size ();
+    crack_from_ = static_cast<std::uint32_t> (before);
+    Star star;
+    for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
+    {
+      if (!on_front (v))
+        continue;
+      tetrahedra.gatherStar (v, star);
+      for (std::uint32_t t : star.tetrahedra ())
+        for (int i = 0; i < 4; ++i)
+        {
+          const Simplex f = complex_.facet (3, t, i);
+          const std::uint32_t* fv = complex_.vertices (2, f.id);
+          if (tetrahedra.vertex (t, i) != v && !listed[f.id] && on_front (fv[0]) && on_front (fv[1]) &&
+              on_front (fv[2]) && !spansGap (fv))
+          {
+            listed[f.id] = 1;
+            candidates_.push_back (f.id);
+          }
+        }
+    }
+    if (candidates_.size () == before)
+      return;
+    indexCandidates ();
+    for (std::size_t c = before; c < candidates_.size (); ++c)
+      for (SimplexId e : edgesOf (complex_, candidates_[c]))
+        if (edge_count_[e] == 1)
+          queueAround (e);
+    drain ();
   }
 
   /** Grows sheets from every W triangle not reached yet whose points are all new. */
@@ -94,30 +163,16 @@ public:
       if (placed_[seed] != NONE || on_[v[0]] || on_[v[1]] || on_[v[2]])
         continue;
       place (seed, {v[0], v[1], v[2]});
-      while (!notches_.empty () || !queue_.empty ())
-      {
-        Entry e;
-        if (!notches_.empty ())
-        {
-          e = notches_.back ();
-          notches_.pop_back ();
-        }
-        else
-        {
-          e = queue_.top ();
-          queue_.pop ();
-        }
-        if (placed_[e.candidate] == NONE)
-          tryPlace (e.candidate, e.edge);
-      }
+      drain ();
     }
   }
 
-  /** Brings each point of W that the sheets missed onto them: a sheet triangle abc that is a
+  /** Brings each point that the sheets missed and that one tetrahedron joins to them onto them
+    * (returns how many): a sheet triangle abc that is a
     * facet of a Delaunay tetrahedron abcv becomes the tent abv, bcv, cav over it, the smallest
     * such, with no edge across a gap. The tent keeps each edge on at most two triangles and each
     * fan one. */
-  void detourThroughMissedPoints (const Tetrahedra& tetrahedra);
+  std::size_t detourThroughMissedPoints (const Tetrahedra& tetrahedra);
 
   /** Closes the holes of the sheets smaller than a gap the sampling resolves (where the growth
     * passed triangles by, or a long triangle was left out) by ear clipping, the shortest new edge
@@ -345,7 +400,7 @@ private:
       return;
     if (on_[apex])
     {
-      if (c >= extra_from_)
+      if (c >= extra_from_ && c < crack_from_)
         return; // a triangle around a dangling edge only brings its point on
       if (edge_count_[ac] == 0 && edge_count_[cb] == 0)
       {
@@ -361,7 +416,8 @@ private:
   const std::vector<Point3>& positions_;
   std::vector<double> spacing_;       // per vertex: see measureSpacing() (0: on no edge of W)
   std::vector<SimplexId> candidates_; // triangle ids: W's, then those around its dangling edges
-  std::uint32_t extra_from_ = 0;
+  std::uint32_t extra_from_ = 0;      // candidates from here on lie around a dangling edge of W,
+  std::uint32_t crack_from_ = NONE;   // and from here on across a crack (closeCracks())
   std::vector<std::uint32_t> edge_start_, edge_candidates_;
   std::vector<std::uint8_t> edge_count_, edge_forward_; // per edge: grown triangles on it; the one's direction
   std::vector<std::uint8_t> on_;                        // per vertex: on a grown triangle
@@ -460,16 +516,17 @@ SheetGrowth::dropExtraFans ()
   ids_.resize (kept);
 }
 
-void
+std::size_t
 SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
 {
+  std::size_t brought = 0;
   std::vector<std::uint32_t> sheet_index (complex_.size (2), NONE);
   for (std::uint32_t i = 0; i < ids_.size (); ++i)
     sheet_index[ids_[i]] = i;
   Star star;
   for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
   {
-    if (on_[v] || spacing_[v] == 0 || tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+    if (on_[v] || tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
       continue;
     tetrahedra.gatherStar (v, star);
     std::uint32_t best = NONE, best_tetrahedron = 0;
@@ -525,7 +582,9 @@ SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
       sheet_index[id] = at;
     }
     on_[v] = 1;
+    ++brought;
   }
+  return brought;
 }
 
 void
@@ -579,40 +638,68 @@ SheetGrowth::fillSmallHoles ()
     return std::find (diagonals.begin (), diagonals.end (), std::pair (std::min (p, r), std::max (p, r))) !=
            diagonals.end ();
   };
-  std::vector<std::uint8_t> visited (nv, 0);
+  // The sheets, by union-find over the edges they share: a sheet's outer boundary, its longest
+  // loop, is no hole.
+  std::vector<std::uint32_t> sheet (triangles_.size ()), first_on_edge (complex_.size (1), NONE);
+  for (std::uint32_t i = 0; i < sheet.size (); ++i)
+    sheet[i] = i;
+  const auto find = [&] (std::uint32_t i) {
+    while (sheet[i] != i)
+      i = sheet[i] = sheet[sheet[i]];
+    return i;
+  };
+  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+    for (SimplexId e : edgesOf (complex_, ids_[i]))
+    {
+      if (first_on_edge[e] == NONE)
+        first_on_edge[e] = i;
+      else
+        sheet[find (i)] = find (first_on_edge[e]);
+    }
+  struct Loop
+  {
+    std::uint32_t first, edges;
+    double perimeter, widest;
+  };
+  std::vector<Loop> loops;
+  std::vector<double> outer (triangles_.size (), 0.0); // per sheet: its longest loop's perimeter
+  {
+    std::vector<std::uint8_t> visited (nv, 0);
+    for (std::uint32_t first = 0; first < nv; ++first)
+    {
+      if (out[first] == NONE || visited[first])
+        continue;
+      Loop l{first, 0, 0.0, 0.0};
+      std::uint32_t v = first;
+      while (v != NONE && !visited[v])
+      {
+        visited[v] = 1;
+        ++l.edges;
+        l.widest = std::max (l.widest, spacing_[v]);
+        if (out[v] != NONE)
+          l.perimeter += distance (v, out[v]);
+        v = out[v];
+      }
+      if (v != first)
+        continue; // not a closed loop (where the sheets touch themselves at a point)
+      double& longest = outer[find (triangle_of[first])];
+      longest = std::max (longest, l.perimeter);
+      loops.push_back (l);
+    }
+  }
   std::vector<std::uint32_t> loop, polygon;
   std::vector<Triangle> ears;
   // Holes do not share a vertex (each has one successor): a diagonal matters within its hole only.
-  for (std::uint32_t first = 0; first < nv; ++first)
+  for (const Loop& l : loops)
   {
-    if (out[first] == NONE || visited[first])
+    // No longer round than a hole as wide as a gap the sampling resolves, at the loop's widest
+    // spacing; not the outer boundary.
+    if (l.edges < 3 || l.edges > MAX_HOLE_EDGES || l.perimeter > M_PI * GAP_SPACINGS * l.widest ||
+        l.perimeter >= outer[find (triangle_of[l.first])])
       continue;
     loop.clear ();
-    std::uint32_t v = first;
-    while (v != NONE && !visited[v] && loop.size () <= MAX_HOLE_EDGES)
-    {
-      visited[v] = 1;
+    for (std::uint32_t v = l.first; loop.empty () || v != l.first; v = out[v])
       loop.push_back (v);
-      v = out[v];
-    }
-    if (v != first || loop.size () < 3 || loop.size () > MAX_HOLE_EDGES)
-      continue; // not closed here, or too long
-    // No longer round than a hole as wide as a gap the sampling resolves, at the loop's widest
-    // spacing.
-    double widest = 0, perimeter = 0;
-    for (std::size_t k = 0; k < loop.size (); ++k)
-    {
-      widest = std::max (widest, spacing_[loop[k]]);
-      perimeter += distance (loop[k], loop[(k + 1) % loop.size ()]);
-    }
-    if (perimeter > M_PI * GAP_SPACINGS * widest)
-      continue;
-    if (loop.size () == 3)
-    {
-      const Triangle& lone = triangles_[triangle_of[loop[0]]];
-      if (std::is_permutation (lone.begin (), lone.end (), loop.begin ()))
-        continue; // the boundary of a lone triangle, no hole
-    }
     // Ear clipping, the ear with the shortest new edge first; the loop's edges are traversed the
     // other way round by the filling, so it runs through the loop backwards.
     polygon.assign (loop.rbegin (), loop.rend ());
@@ -713,8 +800,11 @@ openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Po
   const SimplicialComplex& complex = tetrahedra.complex ();
   SheetGrowth growth (tetrahedra, w, positions);
   growth.grow ();
+  growth.closeCracks (tetrahedra);
   growth.dropExtraFans ();
-  growth.detourThroughMissedPoints (tetrahedra);
+  // Points buried in X (a wall between a roof and the ground X fills) come on a tent at a time.
+  for (int round = 0; round < MAX_TENT_ROUNDS && growth.detourThroughMissedPoints (tetrahedra) > 0; ++round)
+  {}
   growth.fillSmallHoles ();
   // A sheet with no up or down faces out of the labelled solid: per triangle on its surface, +-area.
   const auto out_of_solid = [&] (const std::vector<Triangle>& triangles, const std::vector<SimplexId>& ids) {

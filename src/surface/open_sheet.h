@@ -35,8 +35,10 @@ namespace pcl_wrap::detail
   *
   * A triangle with an edge longer than 3.5 times the spacing at both of its ends (the length of
   * their third-shortest edges in W) spans a gap the sampling resolves and is left out: separate
-  * parts stay apart. A point of W the sheets miss gets a tent: a sheet triangle that is a facet of a
-  * Delaunay tetrahedron with the point as its apex is replaced by the other three facets.
+  * parts stay apart. Then Delaunay triangles with all three points on the front close the cracks
+  * where X cut a ring-shaped layer. A point of W the sheets miss gets a tent: a sheet triangle that
+  * is a facet of a Delaunay tetrahedron with the point as its apex is replaced by the other three
+  * facets. Holes smaller than a gap are closed by ear clipping.
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close

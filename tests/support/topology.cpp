@@ -196,6 +196,18 @@ describeOpenSurface (const std::vector<Triangle>& triangles)
   std::map<std::uint32_t, std::size_t> component_size;
   for (const auto& entry : link)
     r.largest_component_vertices = std::max (r.largest_component_vertices, ++component_size[parts.find (entry.first)]);
+  std::uint32_t largest = 0;
+  for (const auto& [root, size] : component_size)
+    if (size == r.largest_component_vertices)
+      largest = root;
+  long v = 0, e = 0, f = 0;
+  for (const auto& entry : link)
+    v += parts.find (entry.first) == largest;
+  for (const auto& [edge, count] : uses)
+    e += parts.find (edge.first) == largest;
+  for (const auto& t : triangles)
+    f += parts.find (t[0]) == largest;
+  r.largest_component_euler = v - e + f;
   r.euler = long (r.vertices) - long (uses.size ()) + long (triangles.size ());
   r.manifold = true;
   for (const auto& [edge, count] : uses)

@@ -57,7 +57,7 @@ struct OpenSurfaceReport
   bool no_duplicate_triangles = false; // no two triangles on the same three vertices
   std::size_t vertices = 0, boundary_edges = 0, components = 0;
   std::size_t largest_component_vertices = 0;
-  long euler = 0;
+  long euler = 0, largest_component_euler = 0;
 };
 
 OpenSurfaceReport
