@@ -8,6 +8,7 @@
 #include "wrap/retraction.h"
 #include "wrap/sink_deletion.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -251,7 +252,21 @@ WrapEngine::checkX () const
 void
 WrapEngine::checkSurface () const
 {
-  if (defaultSurface () && !nonManifoldEdges (w_.triangles).empty ())
+  if (!defaultSurface ())
+    return;
+  if (parameters_.output == Output::surface && result_.statistics.single_layer)
+  {
+    // An open sheet: every directed edge once (each edge on at most two triangles, both ways).
+    std::vector<std::uint64_t> directed;
+    for (const auto& t : w_.triangles)
+      for (int i = 0; i < 3; ++i)
+        directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
+    std::sort (directed.begin (), directed.end ());
+    if (std::adjacent_find (directed.begin (), directed.end ()) != directed.end ())
+      throw std::logic_error ("invariant: the open sheet is not an oriented 2-manifold");
+    return;
+  }
+  if (!nonManifoldEdges (w_.triangles).empty ())
     throw std::logic_error ("invariant: the surface is not closed and oriented");
 }
 
