@@ -179,6 +179,13 @@ public:
     * first; the filling's triangles need not be Delaunay and have no id (NO_ID). */
   void fillSmallHoles ();
 
+  /** Per vertex, its triangles: those of vertex v are around[start[v] .. start[v + 1]). */
+  std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>> trianglesAroundVertices () const;
+
+  /** Per triangle, one triangle standing for its sheet (triangles joined across the edges they share, and the
+    * filling of a hole to the hole's rim). */
+  std::vector<std::uint32_t> sheets () const;
+
   /** Drops, at each point where the grown triangles make more than one fan, all but the largest. */
   void dropExtraFans ();
 
@@ -431,6 +438,50 @@ private:
   std::priority_queue<Entry> queue_;                                  // the others
 };
 
+std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>>
+SheetGrowth::trianglesAroundVertices () const
+{
+  const std::uint32_t nv = complex_.numVertices ();
+  std::vector<std::uint32_t> start (nv + 1, 0), around (3 * triangles_.size ());
+  for (const Triangle& t : triangles_)
+    for (std::uint32_t v : t)
+      ++start[v + 1];
+  for (std::uint32_t v = 0; v < nv; ++v)
+    start[v + 1] += start[v];
+  std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
+  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+    for (std::uint32_t v : triangles_[i])
+      around[at[v]++] = i;
+  return {std::move (start), std::move (around)};
+}
+
+std::vector<std::uint32_t>
+SheetGrowth::sheets () const
+{
+  std::vector<std::uint32_t> parent (triangles_.size ()), first_on_edge (complex_.size (1), NONE);
+  for (std::uint32_t i = 0; i < parent.size (); ++i)
+    parent[i] = i;
+  const auto find = [&] (std::uint32_t i) {
+    while (parent[i] != i)
+      i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
+    for (int k = 0; k < 3 && ids_[i] != NO_ID; ++k)
+    {
+      const SimplexId e = edgesOf (complex_, ids_[i])[k];
+      if (first_on_edge[e] == NONE)
+        first_on_edge[e] = i;
+      else
+        parent[find (i)] = find (first_on_edge[e]);
+    }
+  for (const auto& [filling, partner] : fill_partner_)
+    parent[find (filling)] = find (partner);
+  for (std::uint32_t i = 0; i < parent.size (); ++i)
+    parent[i] = find (i);
+  return parent;
+}
+
 void
 SheetGrowth::dropExtraFans ()
 {
@@ -438,19 +489,7 @@ SheetGrowth::dropExtraFans ()
     return;
   const std::uint32_t nv = complex_.numVertices ();
   std::vector<std::uint8_t> dropped (triangles_.size (), 0);
-  // Per vertex, its grown triangles.
-  std::vector<std::uint32_t> start (nv + 1, 0), around (3 * triangles_.size ());
-  for (const Triangle& t : triangles_)
-    for (std::uint32_t v : t)
-      ++start[v + 1];
-  for (std::uint32_t v = 0; v < nv; ++v)
-    start[v + 1] += start[v];
-  {
-    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
-    for (std::uint32_t i = 0; i < triangles_.size (); ++i)
-      for (std::uint32_t v : triangles_[i])
-        around[at[v]++] = i;
-  }
+  const auto [start, around] = trianglesAroundVertices ();
   std::vector<std::uint32_t> work = std::move (touched_), fan, members;
   std::sort (work.begin (), work.end ());
   work.erase (std::unique (work.begin (), work.end ()), work.end ());
@@ -596,18 +635,7 @@ SheetGrowth::fillSmallHoles ()
   for (SimplexId id : ids_)
     for (SimplexId e : edgesOf (complex_, id))
       ++edge_count_[e];
-  std::vector<std::uint32_t> start (nv + 1, 0), around (3 * triangles_.size ());
-  for (const Triangle& t : triangles_)
-    for (std::uint32_t v : t)
-      ++start[v + 1];
-  for (std::uint32_t v = 0; v < nv; ++v)
-    start[v + 1] += start[v];
-  {
-    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
-    for (std::uint32_t i = 0; i < triangles_.size (); ++i)
-      for (std::uint32_t v : triangles_[i])
-        around[at[v]++] = i;
-  }
+  const auto [start, around] = trianglesAroundVertices ();
   // The boundary as a successor per vertex: out[a] = b for an edge a -> b of one triangle only;
   // each vertex of a manifold sheet has at most one, so the loops are simple.
   std::vector<std::uint32_t> out (nv, NONE), triangle_of (nv, NONE);
@@ -640,22 +668,8 @@ SheetGrowth::fillSmallHoles ()
   };
   // The sheets, by union-find over the edges they share: a sheet's outer boundary, its longest
   // loop, is no hole.
-  std::vector<std::uint32_t> sheet (triangles_.size ()), first_on_edge (complex_.size (1), NONE);
-  for (std::uint32_t i = 0; i < sheet.size (); ++i)
-    sheet[i] = i;
-  const auto find = [&] (std::uint32_t i) {
-    while (sheet[i] != i)
-      i = sheet[i] = sheet[sheet[i]];
-    return i;
-  };
-  for (std::uint32_t i = 0; i < triangles_.size (); ++i)
-    for (SimplexId e : edgesOf (complex_, ids_[i]))
-    {
-      if (first_on_edge[e] == NONE)
-        first_on_edge[e] = i;
-      else
-        sheet[find (i)] = find (first_on_edge[e]);
-    }
+  const std::vector<std::uint32_t> sheet = sheets ();
+  const auto find = [&] (std::uint32_t i) { return sheet[i]; };
   struct Loop
   {
     std::uint32_t first, edges;
@@ -742,29 +756,9 @@ template <typename Facing, typename TieBreak>
 Boundary
 SheetGrowth::orientedSheets (const Facing& facing, const TieBreak& tieBreak)
 {
-  // Connected sheets: triangles joined across the edges they share, by union-find over edges.
   const std::size_t n = triangles_.size ();
-  std::vector<std::uint32_t> parent (n);
-  for (std::uint32_t i = 0; i < n; ++i)
-    parent[i] = i;
-  const auto find = [&] (std::uint32_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::fill (edge_forward_.begin (), edge_forward_.end (), 0);
-  std::vector<std::uint32_t> first_on_edge (complex_.size (1), NONE);
-  for (std::uint32_t i = 0; i < n; ++i)
-    for (int k = 0; k < 3 && ids_[i] != NO_ID; ++k)
-    {
-      const SimplexId e = edgesOf (complex_, ids_[i])[k];
-      if (first_on_edge[e] == NONE)
-        first_on_edge[e] = i;
-      else
-        parent[find (i)] = find (first_on_edge[e]);
-    }
-  for (const auto& [filling, partner] : fill_partner_)
-    parent[find (filling)] = find (partner);
+  const std::vector<std::uint32_t> sheet = sheets ();
+  const auto find = [&] (std::uint32_t i) { return sheet[i]; };
   std::vector<double> vote (n, 0.0);
   for (std::uint32_t i = 0; i < n; ++i)
     vote[find (i)] += facing (triangles_[i]);
