@@ -489,7 +489,9 @@ SheetGrowth::dropExtraFans ()
     return;
   const std::uint32_t nv = complex_.numVertices ();
   std::vector<std::uint8_t> dropped (triangles_.size (), 0);
-  const auto [start, around] = trianglesAroundVertices ();
+  // Named, not bound: a lambda below captures them (C++17).
+  const auto by_vertex = trianglesAroundVertices ();
+  const std::vector<std::uint32_t>&start = by_vertex.first, &around = by_vertex.second;
   std::vector<std::uint32_t> work = std::move (touched_), fan, members;
   std::sort (work.begin (), work.end ());
   work.erase (std::unique (work.begin (), work.end ()), work.end ());
@@ -635,7 +637,9 @@ SheetGrowth::fillSmallHoles ()
   for (SimplexId id : ids_)
     for (SimplexId e : edgesOf (complex_, id))
       ++edge_count_[e];
-  const auto [start, around] = trianglesAroundVertices ();
+  // Named, not bound: a lambda below captures them (C++17).
+  const auto by_vertex = trianglesAroundVertices ();
+  const std::vector<std::uint32_t>&start = by_vertex.first, &around = by_vertex.second;
   // The boundary as a successor per vertex: out[a] = b for an edge a -> b of one triangle only;
   // each vertex of a manifold sheet has at most one, so the loops are simple.
   std::vector<std::uint32_t> out (nv, NONE), triangle_of (nv, NONE);
