@@ -3,6 +3,7 @@
 #include "wrap_engine.h"
 
 #include "filtration_data.h"
+#include "surface/single_layer.h"
 #include "util/parallel_for_each.h"
 #include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
@@ -15,6 +16,39 @@
 
 namespace pcl_wrap::detail
 {
+namespace
+{
+
+/** The sample: one vertex in this many along the vertex ids' Z-order curve, even in space. */
+constexpr std::size_t SAMPLE_STRIDE = 64;
+
+/** Does the wrap of an even sample of the vertices find a single layer (isSingleLayer())? A
+  * single layer needs no labels, so their flood waits until the output asks for them. The sample
+  * decides only when the labels are computed, never the output. */
+bool
+sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<double>& weights)
+{
+  std::vector<Point3> p;
+  std::vector<double> w;
+  for (std::size_t v = 0; v < positions.size (); v += SAMPLE_STRIDE)
+  {
+    p.push_back (positions[v]);
+    w.push_back (weights[v]);
+  }
+  WrapParameters raw;
+  raw.output = Output::raw;
+  WrapEngine sample (p, w, raw);
+  sample.selectInput ();
+  sample.triangulate ();
+  sample.buildComplex ();
+  if (sample.complex ().dimension () != 3)
+    return false;
+  sample.classify ();
+  sample.collapse ();
+  return isSingleLayer (sample.complex (), sample.x ());
+}
+
+} // namespace
 
 WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights,
                         const WrapParameters& parameters, const StageObserver& observer)
@@ -89,14 +123,25 @@ WrapEngine::triangulate ()
 }
 
 void
-WrapEngine::startDefaultSurface ()
+WrapEngine::startDefaultSurface (std::optional<bool> label_now)
 {
   if (!defaultSurface ())
     return;
+  if (!label_now)
+  {
+    label_now =
+        parameters_.output == Output::closed || vertex_positions_.size () < DefaultSurface::LABEL_ON_DEMAND_FROM;
+    if (!*label_now)
+    {
+      label_now = !sampleIsSingleLayer (vertex_positions_, vertex_weights_);
+      clock_.stageDone ("sample");
+    }
+  }
   tetrahedra_ = Tetrahedra (std::move (triangulation_.neighbours));
   surface_ = std::make_unique<DefaultSurface> (triangulation_.top_simplices, tetrahedra_, vertex_positions_,
-                                               vertex_weights_);
-  clock_.stageDone ("votes");
+                                               vertex_weights_, *label_now);
+  if (*label_now)
+    clock_.stageDone ("votes");
 }
 
 void

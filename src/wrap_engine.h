@@ -50,8 +50,10 @@ public:
   void selectInput ();
   /** \brief The regular (weighted Delaunay) triangulation; hidden points are reported. */
   void triangulate ();
-  /** \brief The default surface's votes, then its flood as a task beside the next stages. */
-  void startDefaultSurface ();
+  /** \brief The default surface's votes, then its flood as a task beside the next stages; or
+    * nothing until the surface needs the labels. \a label_now says which; by default a sample
+    * of the points does (a single layer needs no labels). Either way the output is the same. */
+  void startDefaultSurface (std::optional<bool> label_now = std::nullopt);
   /** \brief Del S as a simplicial complex with faces, cofaces and coface counts. */
   void buildComplex ();
   /** \brief Each simplex's class and its flow (§5). */

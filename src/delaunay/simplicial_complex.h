@@ -51,6 +51,8 @@ public:
   /** \brief The k+1 vertex ids of simplex \a s of dimension \a k. */
   const std::uint32_t* vertices (int k, SimplexId s) const { return &vertices_[k][(k + 1) * std::size_t (s)]; }
   std::uint32_t vertex (int k, SimplexId s, int i) const { return vertices (k, s)[i]; }
+  /** \brief The vertex ids of all simplices of dimension \a k, k + 1 per simplex. */
+  const FilledInParallel<std::uint32_t>& vertexArray (int k) const { return vertices_[k]; }
 
   /** \brief Per simplex of dimension \a k (0 to 2): how many simplices of dimension k + 1 have it
     * as a face. */

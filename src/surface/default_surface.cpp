@@ -42,9 +42,12 @@ verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uin
 } // namespace
 
 DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
-                                const std::vector<Point3>& positions, const std::vector<double>& weights)
-  : adjacency_ (adjacency)
+                                const std::vector<Point3>& positions, const std::vector<double>& weights,
+                                bool label_now)
+  : adjacency_ (adjacency), positions_ (positions), weights_ (weights)
 {
+  if (!label_now)
+    return;
   // The flood reads nothing but the votes and the neighbours, so it runs on one thread while the
   // others build the complex and compute X, which it needs only to break exact ties.
   labelling_.emplace (tetrahedra, adjacency, positions, weights);
@@ -64,25 +67,47 @@ DefaultSurface::~DefaultSurface ()
   }
 }
 
+SolidLabels
+DefaultSurface::labelsFor (const Subcomplex& x)
+{
+  if (labelling_)
+    flooding_.wait ();
+  else
+  {
+    labelling_.emplace (adjacency_.complex ().vertexArray (3), adjacency_, positions_, weights_);
+    labelling_->flood ();
+  }
+  SolidLabels labels = labelling_->labels (x);
+  labelling_.reset ();
+  return labels;
+}
+
 DefaultSurface::Output
 DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
                          const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
-  flooding_.wait ();
-  SolidLabels labels = labelling_->labels (x);
-  labelling_.reset ();
-  clock.stageDone ("labelling");
-  const bool single_layer = !labels.hull && isSingleLayer (complex, x, labels.inside);
+  std::optional<SolidLabels> known;
+  bool single_layer = isSingleLayer (complex, x);
+  if (single_layer && complex.numVertices () < LABEL_ON_DEMAND_FROM)
+  {
+    known = labelsFor (x);
+    single_layer = !known->hull;
+  }
   if (single_layer && !closed && x.size (2) > 0)
   {
-    // One open sheet through the points (a curve, with no triangle in X, is W below).
+    // One open sheet through the points (a curve, with no triangle in X, is W below). The labels
+    // only turn a sheet with no up or down, if there is one.
     stats.single_layer = true;
     Output out;
-    out.w = openSheet (adjacency_, extractBoundary (complex, x), positions, labels.inside, viewpoint);
+    out.w = openSheet (
+        adjacency_, extractBoundary (complex, x), positions,
+        [&] { return known ? known->inside : labelsFor (x).inside; }, viewpoint);
     clock.stageDone ("sheet");
     return out;
   }
+  SolidLabels labels = known ? std::move (*known) : labelsFor (x);
+  clock.stageDone ("labelling");
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
   // the votes between their small spheres say nothing: the solid is X, whose boundary is the
   // volume's outer surface (the paper's W), and the points inside stay inside.

@@ -23,19 +23,27 @@ namespace pcl_wrap::detail
 
 /** \brief The default surface (docs/surface.md) as one stage beside the paper's construction: the
   * labelling of the Delaunay tetrahedra, started right after the triangulation and flooded while
-  * the construction computes X; then, given X, the repair into a 2-manifold, the surface read off
-  * the labels, the open sheet (or the closed two-sided shell) for a single layer, and the split of what still touches itself.
-  * Its policy, which of these the output is, is in surface(). */
+  * the construction computes X (unless the points look like a single layer, which needs no
+  * labels); then, given X, the repair into a 2-manifold, the surface read off the labels, the open
+  * sheet (or the closed two-sided shell) for a single layer, and the split of what still touches
+  * itself. Its policy, which of these the output is, is in surface(). */
 class DefaultSurface
 {
 public:
-  /** \brief The votes, on all threads; then the flood, as a task beside the caller's next stages.
+  /** \brief From this many points on, the engine may leave the labelling to surface() (when a
+    * sample of the points is a single layer); below, it always starts it with the construction,
+    * and a single layer whose votes enclose nothing (a few points, a box's corners around its
+    * centre) is its convex hull rather than a sheet. */
+  static constexpr std::size_t LABEL_ON_DEMAND_FROM = 200000;
+
+  /** \brief With \a label_now, the votes on all threads, then the flood as a task beside the
+    * caller's next stages; otherwise nothing until surface() needs the labels.
     * \param[in] tetrahedra four vertex ids per tetrahedron; read only here
     * \param[in] adjacency the same tetrahedra's neighbours; outlives this, and is attached to its
     *            complex before surface()
-    * \param[in] positions, weights per vertex */
+    * \param[in] positions, weights per vertex; outlive this */
   DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
-                  const std::vector<Point3>& positions, const std::vector<double>& weights);
+                  const std::vector<Point3>& positions, const std::vector<double>& weights, bool label_now);
   DefaultSurface (const DefaultSurface&) = delete;
   DefaultSurface& operator= (const DefaultSurface&) = delete;
   /** \brief Waits for a flood still running (the engine stopped at an exception); its own
@@ -59,7 +67,12 @@ public:
                   const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock);
 
 private:
+  /** The labels, from the flood started by the constructor or, if none was, from one run now. */
+  SolidLabels labelsFor (const Subcomplex& x);
+
   const Tetrahedra& adjacency_;
+  const std::vector<Point3>& positions_;
+  const std::vector<double>& weights_;
   std::optional<SolidLabelling> labelling_; ///< engaged while its flood may run
   tbb::task_group flooding_;
 };

@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <queue>
+#include <cstring>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -104,10 +104,7 @@ public:
         notches_.pop_back ();
       }
       else
-      {
-        e = queue_.top ();
-        queue_.pop ();
-      }
+        e = queue_.pop ();
       if (placed_[e.candidate] == NONE)
         tryPlace (e.candidate, e.edge);
     }
@@ -123,27 +120,32 @@ public:
     for (SimplexId id : candidates_)
       listed[id] = 1;
     const auto on_front = [&] (std::uint32_t v) { return open_edges_[v] > 0; };
+    // Facet i of tetrahedron t, if it closes a crack and t is the lower of its two tetrahedra.
+    const auto crack = [&] (std::uint32_t t, int i) {
+      for (int k = 1; k < 4; ++k)
+        if (!on_front (tetrahedra.vertex (t, (i + k) & 3)))
+          return NO_ID;
+      const std::uint32_t u = tetrahedra.neighbour (t, i);
+      const SimplexId f = complex_.facet (3, t, i).id;
+      return (u != OUTSIDE_HULL && u < t) || listed[f] || spansGap (complex_.vertices (2, f)) ? NO_ID : f;
+    };
     const std::size_t before = candidates_.size ();
     crack_from_ = static_cast<std::uint32_t> (before);
-    Star star;
-    for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
-    {
-      if (!on_front (v))
-        continue;
-      tetrahedra.gatherStar (v, star);
-      for (std::uint32_t t : star.tetrahedra ())
-        for (int i = 0; i < 4; ++i)
-        {
-          const Simplex f = complex_.facet (3, t, i);
-          const std::uint32_t* fv = complex_.vertices (2, f.id);
-          if (tetrahedra.vertex (t, i) != v && !listed[f.id] && on_front (fv[0]) && on_front (fv[1]) &&
-              on_front (fv[2]) && !spansGap (fv))
-          {
-            listed[f.id] = 1;
-            candidates_.push_back (f.id);
-          }
-        }
-    }
+    fillInOrder (
+        tetrahedra.size (),
+        [&] (std::size_t t) {
+          std::size_t n = 0;
+          for (int i = 0; i < 4; ++i)
+            n += crack (static_cast<std::uint32_t> (t), i) != NO_ID;
+          return n;
+        },
+        [&] (std::size_t total) { candidates_.resize (before + total); },
+        [&] (std::size_t t, std::size_t at) {
+          for (int i = 0; i < 4; ++i)
+            if (const SimplexId f = crack (static_cast<std::uint32_t> (t), i); f != NO_ID)
+              candidates_[before + at++] = f;
+          return at;
+        });
     if (candidates_.size () == before)
       return;
     indexCandidates ();
@@ -201,11 +203,39 @@ private:
     std::uint8_t kind; // 0 fills a notch, 1 brings a new point, 2 the rest
     float size;        // squared longest edge
     std::uint32_t candidate;
-    SimplexId edge;                      // the front edge it is placed across
-    bool operator<(const Entry& o) const // the priority queue pops the greatest: the least kind, size
+    SimplexId edge; // the front edge it is placed across
+  };
+
+  /** The queue of the candidates that fill no notch: the least kind first, then the smallest to
+    * within an eighth of an octave, the last queued first among those; each step in constant
+    * time, where a heap of millions of entries would miss the cache at every level. */
+  class Queue
+  {
+  public:
+    bool empty () const { return size_ == 0; }
+    void push (const Entry& e)
     {
-      return std::tie (o.kind, o.size, o.candidate) < std::tie (kind, size, candidate);
+      std::uint32_t bits;
+      std::memcpy (&bits, &e.size, sizeof bits); // a positive float's bits grow with it
+      const std::size_t b = (e.kind == 1 ? 0 : OCTAVES) + (bits >> 20);
+      buckets_[b].push_back (e);
+      lowest_ = std::min (lowest_, b);
+      ++size_;
     }
+    Entry pop ()
+    {
+      while (buckets_[lowest_].empty ())
+        ++lowest_;
+      const Entry e = buckets_[lowest_].back ();
+      buckets_[lowest_].pop_back ();
+      --size_;
+      return e;
+    }
+
+  private:
+    static constexpr std::size_t OCTAVES = std::size_t (1) << 11; // exponent and 3 bits of mantissa
+    std::vector<std::vector<Entry>> buckets_ = std::vector<std::vector<Entry>> (2 * OCTAVES);
+    std::size_t lowest_ = 2 * OCTAVES, size_ = 0;
   };
 
   double distance (std::uint32_t a, std::uint32_t b) const
@@ -435,7 +465,7 @@ private:
   std::vector<std::uint32_t> touched_; // points a triangle touched where its front met itself
   std::vector<std::pair<std::uint32_t, std::uint32_t>> fill_partner_; // (filling triangle, one on its hole)
   std::vector<Entry> notches_;                                        // candidates with two edges on the front
-  std::priority_queue<Entry> queue_;                                  // the others
+  Queue queue_;                                                       // the others
 };
 
 std::pair<std::vector<std::uint32_t>, std::vector<std::uint32_t>>
@@ -793,7 +823,7 @@ SheetGrowth::orientedSheets (const Facing& facing, const TieBreak& tieBreak)
 
 Boundary
 openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
-           const std::vector<std::uint8_t>& inside, const std::optional<Point3>& viewpoint)
+           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint)
 {
   const SimplicialComplex& complex = tetrahedra.complex ();
   SheetGrowth growth (tetrahedra, w, positions);
@@ -806,7 +836,7 @@ openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Po
   growth.fillSmallHoles ();
   // A sheet with no up or down faces out of the labelled solid: per triangle on its surface, +-area.
   const auto out_of_solid = [&] (const std::vector<Triangle>& triangles, const std::vector<SimplexId>& ids) {
-    const Boundary solid = extractSolidBoundary (tetrahedra, inside);
+    const Boundary solid = extractSolidBoundary (tetrahedra, inside ());
     // Per triangle of the complex on the solid's surface: 1 as it goes there in ascending vertex
     // order up to an even permutation, 2 odd.
     std::vector<std::uint8_t> solid_order (complex.size (2), 0);

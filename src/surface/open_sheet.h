@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -42,11 +43,11 @@ namespace pcl_wrap::detail
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
-  * with their convex hull (the labelled solid, the tetrahedra flagged in \a inside).
+  * with their convex hull (the labelled solid: \a inside flags its tetrahedra, called only then).
   * \param[in] tetrahedra attached to their complex
   * \param[in] w the boundary of X, with its triangles' ids */
 Boundary
 openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
-           const std::vector<std::uint8_t>& inside, const std::optional<Point3>& viewpoint);
+           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint);
 
 } // namespace pcl_wrap::detail

@@ -5,25 +5,34 @@
 #include "surface/shell_joins.h"
 #include "surface/shell_pieces.h"
 #include "surface/shell_ties.h"
+#include "util/parallel_for_each.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <utility>
 
 namespace pcl_wrap::detail
 {
 
 bool
-isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
+isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x)
 {
-  std::size_t solid = 0, in_x = 0;
-  for (SimplexId t = 0; t < inside.size (); ++t)
-    if (inside[t])
-    {
-      ++solid;
-      in_x += x.contains ({3, t});
-    }
-  return complex.dimension () == 3 && 2 * in_x < solid;
+  if (complex.dimension () != 3)
+    return false;
+  // Per triangle, on how many of X's tetrahedra (0, 1 or 2).
+  std::vector<std::atomic<std::uint8_t>> on (complex.size (2));
+  parallelForEach (complex.size (3), [&] (std::size_t t) {
+    if (x.contains ({3, static_cast<SimplexId> (t)}))
+      for (int i = 0; i < 4; ++i)
+        on[complex.facet (3, static_cast<SimplexId> (t), i).id].fetch_add (1, std::memory_order_relaxed);
+  });
+  const std::size_t sheet = countInParallel (complex.size (2), [&] (std::size_t f) {
+    return x.contains ({2, static_cast<SimplexId> (f)}) && on[f].load (std::memory_order_relaxed) == 0;
+  });
+  const std::size_t bounding =
+      countInParallel (complex.size (2), [&] (std::size_t f) { return on[f].load (std::memory_order_relaxed) == 1; });
+  return sheet > bounding;
 }
 
 std::size_t

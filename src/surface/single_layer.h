@@ -19,12 +19,12 @@ namespace pcl_wrap::detail
 {
 
 /** \brief Is the sample a single layer, with no volume behind it (a terrain, a scan seen from one
-  * side)? Then Wrap's flow has collapsed the space under the points, and most of the tetrahedra
-  * that the labelling put inside, which close the layer with its convex hull, are not in X.
-  * On a closed object X holds most of them, as a rule nearly all (it is larger than the solid:
-  * it webs across concavities). */
+  * side)? Then Wrap's flow has collapsed the space under the points, and X is the layer itself
+  * (the paper's Figure 3): most of its triangles are faces of none of its tetrahedra. On a closed
+  * object X is a solid, and nearly all of its triangles that are not inside it bound it: the
+  * sample is a single layer when X has more triangles on no tetrahedron of X than on one. */
 bool
-isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& inside);
+isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x);
 
 /** \brief The number of distinct vertices of \a triangles. */
 std::size_t
