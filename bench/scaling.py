@@ -100,6 +100,16 @@ def report(rows, name):
         lines.append(f"| {name} | {LABEL[r['method']]} | {compare.fmt(r['seconds'])} | "
                      f"{r['seconds'] / r['n'] * 1e6:.2f} | {ratio} | {r['peak_mib']:.0f} | "
                      f"{r['peak_mib'] * 2 ** 20 / r['n']:.0f} |")
+    # The default output against the raw run of the same points: what the surface stage costs.
+    raw = {(r["shape"], r["n"]): r for r in rows if r["method"] == "pcl_wrap_raw" and "seconds" in r}
+    pairs = [(r, raw[(r["shape"], r["n"])]) for r in rows
+             if r["method"] == "pcl_wrap" and "seconds" in r and (r["shape"], r["n"]) in raw]
+    if pairs:
+        lines += ["", "The default output against `--raw` on the same points (one run each: rerun a pair with",
+                  "`farm-bench -n 4 --vs 'build/apps/pcl_wrap POINTS OUT.ply --raw' -- build/apps/pcl_wrap POINTS OUT.ply`",
+                  "for the spread):", "", "| points | time × raw | peak memory × raw |", "|---|---|---|"]
+        lines += [f"| {d['shape']} {d['n']:,} | {d['seconds'] / w['seconds']:.2f} | {d['peak_mib'] / w['peak_mib']:.2f} |"
+                  for d, w in pairs]
     largest = max((r for r in rows if r["method"] == "pcl_wrap" and "seconds" in r), key=lambda r: r["n"], default=None)
     if largest and not single:
         per_point = largest["peak_mib"] * 2 ** 20 / largest["n"]

@@ -47,14 +47,19 @@ def cliff(n, rng):
 
 def city(n, rng):
     """Ground and flat-roofed buildings seen from above: roofs, ground and the walls facing up-ish
-    (an aerial scan sees the walls only at a slant: a few points on each)."""
+    (an aerial scan sees the walls only at a slant: a few points on each). Buildings overlap, a later
+    one's roof over an earlier one's; wall points inside a building, under its roof, are not seen."""
     boxes = [(-0.6, -0.6, 0.3, 0.4, 0.3), (0.1, -0.7, 0.6, -0.2, 0.5), (-0.5, 0.2, -0.1, 0.7, 0.2),
              (0.3, 0.2, 0.7, 0.6, 0.4)]
+
+    def roof(xy):
+        z = np.zeros(len(xy))
+        for x0, y0, x1, y1, h in boxes:
+            z[(xy[:, 0] > x0) & (xy[:, 0] < x1) & (xy[:, 1] > y0) & (xy[:, 1] < y1)] = h
+        return z
+
     xy = rng.uniform(-1, 1, (n, 2))
-    z = np.zeros(n)
-    for x0, y0, x1, y1, h in boxes:
-        inside = (xy[:, 0] > x0) & (xy[:, 0] < x1) & (xy[:, 1] > y0) & (xy[:, 1] < y1)
-        z[inside] = h
+    z = roof(xy)
     walls = []
     for x0, y0, x1, y1, h in boxes:
         m = int(n * 2 * ((x1 - x0) + (y1 - y0)) * h / 4 * 0.3)  # sparser than the ground
@@ -62,7 +67,8 @@ def city(n, rng):
         side = rng.integers(0, 4, m)
         x = np.where(side < 2, x0 + t * (x1 - x0), np.where(side == 2, x0, x1))
         y = np.where(side >= 2, y0 + t * (y1 - y0), np.where(side == 0, y0, y1))
-        walls.append(np.c_[x, y, s])
+        seen = s >= roof(np.c_[x, y])
+        walls.append(np.c_[x, y, s][seen])
     return np.r_[np.c_[xy, z], np.concatenate(walls)]
 
 

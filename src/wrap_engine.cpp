@@ -216,6 +216,10 @@ WrapEngine::deleteSinks ()
 void
 WrapEngine::extractSurface ()
 {
+  // X is final: the flow is needed again only to write the complex out. Let go of it (a quarter
+  // of the peak memory at this point) before the surface stage allocates its own.
+  if (!parameters_.keep_complex)
+    classification_.reset ();
   if (!defaultSurface ())
   {
     w_ = extractBoundary (*complex_, *x_);

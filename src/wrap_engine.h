@@ -71,6 +71,7 @@ public:
 
   const WrapResult& result () const { return result_; }
   const SimplicialComplex& complex () const { return *complex_; }
+  /** \brief After extractSurface(), only with WrapParameters::keep_complex. */
   const Classification& classification () const { return *classification_; }
   const PowerPredicates& predicates () const { return *predicates_; }
   const Subcomplex& x () const { return *x_; }

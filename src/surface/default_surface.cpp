@@ -101,7 +101,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     stats.single_layer = true;
     Output out;
     out.w = openSheet (
-        adjacency_, extractBoundary (complex, x), positions,
+        adjacency_, extractBoundary (complex, x, false), positions,
         [&] { return known ? known->inside : labelsFor (x).inside; }, viewpoint);
     clock.stageDone ("sheet");
     return out;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -75,19 +76,38 @@ public:
     indexCandidates ();
   }
 
-  /** Per edge, the candidates on it, as offsets into one array; the new candidates not placed. */
+  /** Per candidate what the growth reads of it, and per edge the candidates on it, as offsets
+    * into one array; the new candidates not placed. Built anew each time, not grown: a grown
+    * array is copied, and the copy is this stage's peak of memory. */
   void indexCandidates ()
   {
+    std::vector<Candidate> ().swap (about_);
+    std::vector<std::uint32_t> ().swap (edge_candidates_);
+    about_.resize (candidates_.size ());
+    parallelForEach (candidates_.size (), [&] (std::size_t i) {
+      Candidate& c = about_[i];
+      const std::uint32_t* v = complex_.vertices (2, candidates_[i]);
+      c.v = {v[0], v[1], v[2]};
+      c.e = edgesOf (complex_, candidates_[i]);
+      double longest = 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const Point3 &a = positions_[v[k]], &b = positions_[v[(k + 1) % 3]];
+        longest = std::max (longest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                                         (a[2] - b[2]) * (a[2] - b[2]));
+      }
+      c.size = static_cast<float> (longest);
+    });
     edge_start_.assign (complex_.size (1) + 1, 0);
-    for (SimplexId id : candidates_)
-      for (SimplexId e : edgesOf (complex_, id))
+    for (const Candidate& c : about_)
+      for (SimplexId e : c.e)
         ++edge_start_[e + 1];
     for (std::size_t e = 0; e + 1 < edge_start_.size (); ++e)
       edge_start_[e + 1] += edge_start_[e];
     edge_candidates_.resize (edge_start_.back ());
     std::vector<std::uint32_t> at (edge_start_.begin (), edge_start_.end () - 1);
-    for (std::uint32_t c = 0; c < candidates_.size (); ++c)
-      for (SimplexId e : edgesOf (complex_, candidates_[c]))
+    for (std::uint32_t c = 0; c < about_.size (); ++c)
+      for (SimplexId e : about_[c].e)
         edge_candidates_[at[e]++] = c;
     placed_.resize (candidates_.size (), NONE);
   }
@@ -146,11 +166,13 @@ public:
               candidates_[before + at++] = f;
           return at;
         });
+    std::vector<std::uint8_t> ().swap (listed);
     if (candidates_.size () == before)
       return;
+    forgetQueues ();
     indexCandidates ();
     for (std::size_t c = before; c < candidates_.size (); ++c)
-      for (SimplexId e : edgesOf (complex_, candidates_[c]))
+      for (SimplexId e : about_[c].e)
         if (edge_count_[e] == 1)
           queueAround (e);
     drain ();
@@ -161,7 +183,7 @@ public:
   {
     for (std::uint32_t seed = 0; seed < extra_from_; ++seed)
     {
-      const std::uint32_t* v = complex_.vertices (2, candidates_[seed]);
+      const std::uint32_t* v = about_[seed].v.data ();
       if (placed_[seed] != NONE || on_[v[0]] || on_[v[1]] || on_[v[2]])
         continue;
       place (seed, {v[0], v[1], v[2]});
@@ -191,6 +213,23 @@ public:
   /** Drops, at each point where the grown triangles make more than one fan, all but the largest. */
   void dropExtraFans ();
 
+  /** Lets go of the candidates, their index and the queues: the growth is over. */
+  void forgetCandidates ()
+  {
+    for (auto* v : {&candidates_, &edge_start_, &edge_candidates_, &placed_, &open_edges_})
+      std::vector<std::uint32_t> ().swap (*v);
+    std::vector<Candidate> ().swap (about_);
+    std::vector<std::uint8_t> ().swap (edge_forward_);
+    forgetQueues ();
+  }
+
+  /** Lets go of the queues' memory, which they keep when they empty. */
+  void forgetQueues ()
+  {
+    std::vector<Entry> ().swap (notches_);
+    queue_ = Queue ();
+  }
+
   /** The grown triangles, each connected sheet turned so that the sum over its triangles of
     * \a facing (triangle) is not negative; where it is 0, the sum of \a tieBreak (triangles,
     * ids), one value per triangle. */
@@ -200,24 +239,23 @@ public:
 private:
   struct Entry
   {
-    std::uint8_t kind; // 0 fills a notch, 1 brings a new point, 2 the rest
-    float size;        // squared longest edge
     std::uint32_t candidate;
     SimplexId edge; // the front edge it is placed across
   };
 
-  /** The queue of the candidates that fill no notch: the least kind first, then the smallest to
-    * within an eighth of an octave, the last queued first among those; each step in constant
-    * time, where a heap of millions of entries would miss the cache at every level. */
+  /** The queue of the candidates that fill no notch: those that bring a new point first, then the
+    * smallest (by \a size, the squared longest edge) to within an eighth of an octave, the last
+    * queued first among those; each step in constant time, where a heap of millions of entries
+    * would miss the cache at every level. */
   class Queue
   {
   public:
     bool empty () const { return size_ == 0; }
-    void push (const Entry& e)
+    void push (bool brings_new, float size, const Entry& e)
     {
       std::uint32_t bits;
-      std::memcpy (&bits, &e.size, sizeof bits); // a positive float's bits grow with it
-      const std::size_t b = (e.kind == 1 ? 0 : OCTAVES) + (bits >> 20);
+      std::memcpy (&bits, &size, sizeof bits); // a positive float's bits grow with it
+      const std::size_t b = (brings_new ? 0 : OCTAVES) + (bits >> 20);
       buckets_[b].push_back (e);
       lowest_ = std::min (lowest_, b);
       ++size_;
@@ -250,15 +288,23 @@ private:
   void measureSpacing (const Boundary& w)
   {
     const std::uint32_t nv = complex_.numVertices ();
-    std::vector<std::uint8_t> seen (complex_.size (1), 0);
+    // W's edges, each once, in the order of their ids: marked on all threads, then listed.
+    std::vector<std::atomic<std::uint8_t>> in_w (complex_.size (1));
+    parallelForEach (w.triangle_ids.size (), [&] (std::size_t i) {
+      for (SimplexId e : edgesOf (complex_, w.triangle_ids[i]))
+        in_w[e].store (1, std::memory_order_relaxed);
+    });
     std::vector<std::array<std::uint32_t, 2>> edges (w.dangling_edges.begin (), w.dangling_edges.end ());
-    for (SimplexId id : w.triangle_ids)
-      for (SimplexId e : edgesOf (complex_, id))
-        if (!seen[e])
-        {
-          seen[e] = 1;
-          edges.push_back ({complex_.vertex (1, e, 0), complex_.vertex (1, e, 1)});
-        }
+    const std::size_t dangling = edges.size ();
+    fillInOrder (
+        in_w.size (), [&] (std::size_t e) { return std::size_t (in_w[e].load (std::memory_order_relaxed)); },
+        [&] (std::size_t total) { edges.resize (dangling + total); },
+        [&] (std::size_t e, std::size_t at) {
+          if (in_w[e].load (std::memory_order_relaxed))
+            edges[dangling + at++] = {complex_.vertex (1, e, 0), complex_.vertex (1, e, 1)};
+          return at;
+        });
+    std::vector<std::atomic<std::uint8_t>> ().swap (in_w);
     std::vector<std::uint32_t> start (nv + 1, 0);
     for (const auto& [a, b] : edges)
     {
@@ -267,15 +313,19 @@ private:
     }
     for (std::uint32_t v = 0; v < nv; ++v)
       start[v + 1] += start[v];
-    std::vector<double> lengths (start.back ());
     std::vector<std::uint32_t> neighbours (start.back ());
     std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
     for (const auto& [a, b] : edges)
     {
-      neighbours[at[a]] = b;
-      neighbours[at[b]] = a;
-      lengths[at[a]++] = lengths[at[b]++] = distance (a, b);
+      neighbours[at[a]++] = b;
+      neighbours[at[b]++] = a;
     }
+    std::vector<std::array<std::uint32_t, 2>> ().swap (edges);
+    std::vector<double> lengths (start.back ());
+    parallelForEach (nv, [&] (std::size_t v) {
+      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+        lengths[k] = distance (static_cast<std::uint32_t> (v), neighbours[k]);
+    });
     std::vector<double> third (nv, 0.0);
     parallelForEach (nv, [&] (std::size_t v) {
       if (start[v] == start[v + 1])
@@ -338,19 +388,6 @@ private:
     }
   }
 
-  float sizeOf (std::uint32_t c) const
-  {
-    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Point3 &a = positions_[v[k]], &b = positions_[v[(k + 1) % 3]];
-      longest = std::max (longest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                       (a[2] - b[2]) * (a[2] - b[2]));
-    }
-    return static_cast<float> (longest);
-  }
-
   /** Queues the candidates on front edge \a e that are not placed. */
   void queueAround (SimplexId e)
   {
@@ -360,23 +397,22 @@ private:
       if (placed_[c] != NONE)
         continue;
       int on_front = 0;
-      for (SimplexId f : edgesOf (complex_, candidates_[c]))
+      for (SimplexId f : about_[c].e)
         on_front += edge_count_[f] == 1;
-      const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+      const std::uint32_t* v = about_[c].v.data ();
       const bool brings_new = !on_[v[0]] || !on_[v[1]] || !on_[v[2]];
-      const std::uint8_t kind = on_front >= 2 ? 0 : brings_new ? 1 : 2;
-      if (kind == 0)
-        notches_.push_back ({kind, 0.0f, c, e}); // placed at once, in any order: each closes a notch
+      if (on_front >= 2)
+        notches_.push_back ({c, e}); // placed at once, in any order: each closes a notch
       else
-        queue_.push ({kind, sizeOf (c), c, e});
+        queue_.push (brings_new, about_[c].size, {c, e});
     }
   }
 
   /** The edge of the complex between \a a and \a b, one of \a c's. */
   SimplexId edgeBetween (std::uint32_t c, std::uint32_t a, std::uint32_t b) const
   {
-    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
-    const std::array<SimplexId, 3> e = edgesOf (complex_, candidates_[c]);
+    const std::uint32_t* v = about_[c].v.data ();
+    const std::array<SimplexId, 3>& e = about_[c].e;
     for (int k = 0; k < 3; ++k)
       if ((v[k] == a && v[(k + 1) % 3] == b) || (v[k] == b && v[(k + 1) % 3] == a))
         return e[k];
@@ -420,7 +456,7 @@ private:
   {
     if (edge_count_[e] != 1)
       return;
-    const std::uint32_t* v = complex_.vertices (2, candidates_[c]);
+    const std::uint32_t* v = about_[c].v.data ();
     const std::uint32_t* ev = complex_.vertices (1, e);
     std::uint32_t apex = v[0];
     for (int k = 0; k < 3; ++k)
@@ -453,8 +489,15 @@ private:
   const std::vector<Point3>& positions_;
   std::vector<double> spacing_;       // per vertex: see measureSpacing() (0: on no edge of W)
   std::vector<SimplexId> candidates_; // triangle ids: W's, then those around its dangling edges
-  std::uint32_t extra_from_ = 0;      // candidates from here on lie around a dangling edge of W,
-  std::uint32_t crack_from_ = NONE;   // and from here on across a crack (closeCracks())
+  struct Candidate
+  {
+    std::array<std::uint32_t, 3> v; // its vertices and edges as in the complex, read at every step
+    std::array<SimplexId, 3> e;     // of the growth: kept together, one cache line
+    float size;                     // squared longest edge
+  };
+  std::vector<Candidate> about_;    // per candidate
+  std::uint32_t extra_from_ = 0;    // candidates from here on lie around a dangling edge of W,
+  std::uint32_t crack_from_ = NONE; // and from here on across a crack (closeCracks())
   std::vector<std::uint32_t> edge_start_, edge_candidates_;
   std::vector<std::uint8_t> edge_count_, edge_forward_; // per edge: grown triangles on it; the one's direction
   std::vector<std::uint8_t> on_;                        // per vertex: on a grown triangle
@@ -822,13 +865,15 @@ SheetGrowth::orientedSheets (const Facing& facing, const TieBreak& tieBreak)
 } // namespace
 
 Boundary
-openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
+openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& positions,
            const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint)
 {
   const SimplicialComplex& complex = tetrahedra.complex ();
   SheetGrowth growth (tetrahedra, w, positions);
+  w = {}; // the candidates have what the growth needs of it
   growth.grow ();
   growth.closeCracks (tetrahedra);
+  growth.forgetCandidates ();
   growth.dropExtraFans ();
   // Points buried in X (a wall between a roof and the ground X fills) come on a tent at a time.
   for (int round = 0; round < MAX_TENT_ROUNDS && growth.detourThroughMissedPoints (tetrahedra) > 0; ++round)

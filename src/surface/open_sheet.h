@@ -47,7 +47,7 @@ namespace pcl_wrap::detail
   * \param[in] tetrahedra attached to their complex
   * \param[in] w the boundary of X, with its triangles' ids */
 Boundary
-openSheet (const Tetrahedra& tetrahedra, const Boundary& w, const std::vector<Point3>& positions,
+openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& positions,
            const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint);
 
 } // namespace pcl_wrap::detail

@@ -132,7 +132,7 @@ writeFacets (const SimplicialComplex& complex, const FacetsOf& facets_of, Bounda
 } // namespace
 
 Boundary
-extractBoundary (const SimplicialComplex& complex, const Subcomplex& x)
+extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool orient_sheets)
 {
   Boundary w;
   // Facets of X's tetrahedra with one tetrahedron of X, found once (a mask per tetrahedron).
@@ -165,7 +165,14 @@ extractBoundary (const SimplicialComplex& complex, const Subcomplex& x)
     return found;
   };
   const std::vector<SimplexId> sheet = principal (2);
-  orientSheets (complex, sheet, w.triangles);
+  if (orient_sheets)
+    orientSheets (complex, sheet, w.triangles);
+  else
+    for (SimplexId id : sheet)
+    {
+      const std::uint32_t* v = complex.vertices (2, id);
+      w.triangles.push_back ({v[0], v[1], v[2]});
+    }
   w.triangle_ids.insert (w.triangle_ids.end (), sheet.begin (), sheet.end ());
   for (SimplexId e : principal (1))
   {

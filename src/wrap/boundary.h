@@ -28,9 +28,11 @@ struct Boundary
   std::vector<std::uint32_t> isolated_vertices;
 };
 
-/** \brief The boundary of the subcomplex \a x (X, or a solid's closure). */
+/** \brief The boundary of the subcomplex \a x (X, or a solid's closure). With \a orient_sheets
+  * false, its sheets' triangles (on no tetrahedron of \a x) are left as the complex lists their
+  * vertices, for a caller that turns them itself. */
 Boundary
-extractBoundary (const SimplicialComplex& complex, const Subcomplex& x);
+extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool orient_sheets = true);
 
 /** \brief The boundary of the tetrahedra flagged in \a inside (which have no lower-dimensional
   * parts to leave sheets): the facets between an inside and an outside tetrahedron, or the hull,
