@@ -122,6 +122,45 @@ TEST (OpenSheet, CliffAndOverhangStayOneSheet)
   EXPECT_GT (facing (points, r)[2], 0.0);
 }
 
+TEST (OpenSheet, BuildingsAreOneSheetDownEveryWall)
+{
+  // Ground and two flat-roofed buildings seen from above, their walls sampled sparsely: X fills
+  // the corners between the walls and the ground, and W passes over the lower wall points; the
+  // sheet still runs down every wall, through its points.
+  struct Box
+  {
+    double x0, y0, x1, y1, h;
+  };
+  const Box boxes[] = {{-0.6, -0.5, 0.0, 0.3, 0.3}, {0.2, -0.2, 0.7, 0.6, 0.45}};
+  std::mt19937_64 random (11);
+  std::uniform_real_distribution<double> u (-1.0, 1.0), unit (0.0, 1.0);
+  std::vector<Point3> points;
+  for (int i = 0; i < 20000; ++i)
+  {
+    const double x = u (random), y = u (random);
+    double z = 0;
+    for (const Box& b : boxes)
+      if (x > b.x0 && x < b.x1 && y > b.y0 && y < b.y1)
+        z = b.h;
+    points.push_back ({x, y, z});
+  }
+  for (const Box& b : boxes) // a third of the ground's density on the walls
+    for (int i = 0; i < int (20000 * 2 * (b.x1 - b.x0 + b.y1 - b.y0) * b.h / 4 * 0.3); ++i)
+    {
+      const double t = unit (random), s = b.h * unit (random);
+      const int side = i % 4;
+      points.push_back ({side < 2    ? b.x0 + t * (b.x1 - b.x0)
+                         : side == 2 ? b.x0
+                                     : b.x1,
+                         side >= 2   ? b.y0 + t * (b.y1 - b.y0)
+                         : side == 0 ? b.y0
+                                     : b.y1,
+                         s});
+    }
+  const WrapResult r = expectOpenSheet (points, 1, 0.999, WrapParameters (), 1);
+  EXPECT_GT (facing (points, r)[2], 0.0);
+}
+
 TEST (OpenSheet, SeparatePatchesStaySeparate)
 {
   // Two terrain patches with a gap of ten spacings between them: two sheets, no triangle across.

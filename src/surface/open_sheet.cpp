@@ -130,20 +130,23 @@ public:
     }
   }
 
-  /** Closes the cracks between fronts that face each other across less than a gap: X, being
-    * contractible, cuts a ring-shaped layer (an annulus, a terrain around a pond) somewhere, and
-    * W's triangles leave the cut open. The Delaunay triangles whose three points are all on the
-    * front and that span no gap become candidates, and the growth goes on from the front. */
+  /** Closes the cracks between fronts that face each other across less than a gap (X, being
+    * contractible, cuts a ring-shaped layer, an annulus or a terrain around a pond, somewhere, and
+    * W's triangles leave the cut open) and reaches the points inside X's thick parts, which W
+    * passes over. The Delaunay triangles whose three points are each on the front or on no sheet
+    * yet, and that span no gap, become candidates, and the growth goes on from the front. */
   void closeCracks (const Tetrahedra& tetrahedra)
   {
+    lendSpacing (tetrahedra);
     std::vector<std::uint8_t> listed (complex_.size (2), 0);
     for (SimplexId id : candidates_)
       listed[id] = 1;
-    const auto on_front = [&] (std::uint32_t v) { return open_edges_[v] > 0; };
+    // On the front, or on no sheet yet (a point inside X's thick parts).
+    const auto open = [&] (std::uint32_t v) { return open_edges_[v] > 0 || !on_[v]; };
     // Facet i of tetrahedron t, if it closes a crack and t is the lower of its two tetrahedra.
     const auto crack = [&] (std::uint32_t t, int i) {
       for (int k = 1; k < 4; ++k)
-        if (!on_front (tetrahedra.vertex (t, (i + k) & 3)))
+        if (!open (tetrahedra.vertex (t, (i + k) & 3)))
           return NO_ID;
       const std::uint32_t u = tetrahedra.neighbour (t, i);
       const SimplexId f = complex_.facet (3, t, i).id;
@@ -176,6 +179,45 @@ public:
         if (edge_count_[e] == 1)
           queueAround (e);
     drain ();
+  }
+
+  /** Gives each point the growth has not reached and that has no spacing (it is on no edge of W:
+    * inside X's thick parts, such as the corner X fills between a wall and the ground) the median
+    * spacing of the points around it, inwards from those that have one. */
+  void lendSpacing (const Tetrahedra& tetrahedra)
+  {
+    std::vector<std::uint32_t> missing;
+    for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
+      if (!on_[v] && spacing_[v] == 0 && tetrahedra.tetrahedronOf (v) != NO_TETRAHEDRON)
+        missing.push_back (v);
+    Star star;
+    std::vector<double> around;
+    std::vector<std::pair<std::uint32_t, double>> lent;
+    while (!missing.empty ())
+    {
+      lent.clear ();
+      for (std::uint32_t v : missing)
+      {
+        tetrahedra.gatherStar (v, star);
+        around.clear ();
+        for (std::uint32_t t : star.tetrahedra ())
+          for (int k = 0; k < 4; ++k)
+            if (const std::uint32_t u = tetrahedra.vertex (t, k); spacing_[u] > 0)
+              around.push_back (spacing_[u]);
+        if (around.empty ())
+          continue;
+        const auto middle = around.begin () + std::ptrdiff_t (around.size ()) / 2;
+        std::nth_element (around.begin (), middle, around.end ());
+        lent.push_back ({v, *middle});
+      }
+      if (lent.empty ())
+        return;
+      for (const auto& [v, spacing] : lent)
+        spacing_[v] = spacing;
+      missing.erase (std::remove_if (missing.begin (), missing.end (),
+                                     [&] (std::uint32_t v) { return spacing_[v] > 0; }),
+                     missing.end ());
+    }
   }
 
   /** Grows sheets from every W triangle not reached yet whose points are all new. */

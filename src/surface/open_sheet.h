@@ -36,8 +36,9 @@ namespace pcl_wrap::detail
   *
   * A triangle with an edge longer than 3.5 times the spacing at both of its ends (the length of
   * their third-shortest edges in W) spans a gap the sampling resolves and is left out: separate
-  * parts stay apart. Then Delaunay triangles with all three points on the front close the cracks
-  * where X cut a ring-shaped layer. A point of W the sheets miss gets a tent: a sheet triangle that
+  * parts stay apart. Then Delaunay triangles whose points are each on the front or on no sheet yet
+  * close the cracks where X cut a ring-shaped layer and reach the points X buried (where it fills
+  * the corner between a wall and the ground). A point of W the sheets miss gets a tent: a sheet triangle that
   * is a facet of a Delaunay tetrahedron with the point as its apex is replaced by the other three
   * facets. Holes smaller than a gap are closed by ear clipping.
   *
