@@ -63,6 +63,9 @@ printUsage (std::ostream& out)
          "                        scan seen from one side) one open sheet\n"
          "  --closed              a single layer too as a closed surface: a two-sided shell, its\n"
          "                        points copied per side (copies follow the input)\n"
+         "  --viewpoint X,Y,Z     where the sensor was: a single layer's sheet faces it (default:\n"
+         "                        a .pcd file's VIEWPOINT when the cloud is organised or it is set,\n"
+         "                        else up, +z)\n"
          "  --manifold            with --raw: split W where it touches itself, so that the output\n"
          "                        is a closed 2-manifold: copies of the split points follow the input\n"
          "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
@@ -183,6 +186,21 @@ parseOptions (int argc, char** argv)
       o.raw = true;
     else if (arg == "--closed")
       o.closed = true;
+    else if (arg == "--viewpoint")
+    {
+      const std::string v = value ();
+      std::array<double, 3> p{};
+      const char* at = v.c_str ();
+      for (int k = 0; k < 3; ++k)
+      {
+        char* end = nullptr;
+        p[k] = std::strtod (at, &end);
+        if (end == at || !std::isfinite (p[k]) || *end != (k < 2 ? ',' : '\0'))
+          usageError ("--viewpoint takes three finite numbers X,Y,Z");
+        at = end + 1;
+      }
+      o.parameters.viewpoint = p;
+    }
     else if (arg == "--manifold")
       o.parameters.manifold = true;
     else if (arg == "--weight-field")
@@ -257,7 +275,10 @@ main (int argc, char** argv)
         std::cerr << "  " << std::left << std::setw (16) << stage << std::right << std::fixed << std::setprecision (3)
                   << seconds << " s\n" << std::defaultfloat;
     };
-    const WrapResult result = computeWrap (points, file.weights, o.parameters, observer);
+    WrapParameters parameters = o.parameters;
+    if (!parameters.viewpoint && file.viewpoint)
+      parameters.viewpoint = *file.viewpoint;
+    const WrapResult result = computeWrap (points, file.weights, parameters, observer);
 
     std::vector<Point3> vertices = points;
     for (const PointIndex c : result.copies)

@@ -190,6 +190,8 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
   const auto verbosity = pcl::console::getVerbosityLevel ();
   pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
   pcl::PCLPointCloud2 cloud;
+  Eigen::Vector4f origin = Eigen::Vector4f::Zero ();
+  Eigen::Quaternionf orientation;
   int status = -1;
   try
   {
@@ -197,7 +199,7 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
       checkPcdFile (path);
     else
       checkPlyFile (path);
-    status = pcd ? pcl::io::loadPCDFile (path, cloud) : pcl::io::loadPLYFile (path, cloud);
+    status = pcd ? pcl::io::loadPCDFile (path, cloud, origin, orientation) : pcl::io::loadPLYFile (path, cloud);
   }
   catch (const FileError&)
   {
@@ -212,7 +214,10 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
   pcl::console::setVerbosityLevel (verbosity);
   if (status < 0)
     fail (path, std::string ("malformed ") + (pcd ? "PCD" : "PLY") + " file");
-  return pointsOf (cloud, path, weight_field);
+  PointFile file = pointsOf (cloud, path, weight_field);
+  if (pcd && (cloud.height > 1 || origin.head<3> ().squaredNorm () > 0))
+    file.viewpoint = Point3{origin[0], origin[1], origin[2]};
+  return file;
 }
 
 } // namespace

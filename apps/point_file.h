@@ -5,6 +5,7 @@
 #include <pcl_wrap/compute_wrap.h>
 
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct PointFile
 {
   std::vector<Point3> points;
   std::vector<double> weights; ///< empty, or one per point
+  /** Where the sensor was: the VIEWPOINT of a .pcd file that is organised (a depth image, in its
+    * sensor's frame) or whose viewpoint is not PCL's default 0. */
+  std::optional<Point3> viewpoint;
 };
 
 /** \brief Reads the points of a file, by extension: .pcd and .ply through PCL's readers, .xyz and

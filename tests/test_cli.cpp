@@ -414,6 +414,40 @@ TEST_F (Cli, TerrainIsOneOpenSheetOrClosedWhenAsked)
   EXPECT_TRUE (describeSurface (trianglesOf (shell.polygons)).closed_manifold);
 }
 
+TEST_F (Cli, SheetFacesTheViewpointGivenOrThePcdFilesOwn)
+{
+  const auto terrain = terrainSample (3000, 3);
+  // The z of the sheet's summed area normal: + up, - down.
+  const auto up = [&] (const std::string& mesh_file) {
+    pcl::PolygonMesh mesh;
+    EXPECT_GE (pcl::io::loadPLYFile (mesh_file, mesh), 0);
+    double z = 0;
+    for (const auto& t : trianglesOf (mesh.polygons))
+    {
+      const Point3 &a = terrain[t[0]], &b = terrain[t[1]], &c = terrain[t[2]];
+      z += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+    return z;
+  };
+  writeText (DIR + "terrain.xyz", xyzText (terrain));
+  ASSERT_EQ (runCli (DIR + "terrain.xyz " + DIR + "up.ply").status, 0);
+  EXPECT_GT (up (DIR + "up.ply"), 0) << "no viewpoint: up";
+  ASSERT_EQ (runCli (DIR + "terrain.xyz " + DIR + "below.ply --viewpoint 0,0,-5").status, 0);
+  EXPECT_LT (up (DIR + "below.ply"), 0) << "towards a viewpoint below";
+
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (const Point3& p : terrain)
+    cloud.push_back ({float (p[0]), float (p[1]), float (p[2])});
+  cloud.sensor_origin_ = Eigen::Vector4f (0.0f, 0.0f, -5.0f, 0.0f);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (DIR + "terrain.pcd", cloud), 0);
+  ASSERT_EQ (runCli (DIR + "terrain.pcd " + DIR + "pcd.ply").status, 0);
+  EXPECT_LT (up (DIR + "pcd.ply"), 0) << "towards the .pcd file's VIEWPOINT";
+  ASSERT_EQ (runCli (DIR + "terrain.pcd " + DIR + "given.ply --viewpoint 0,0,5").status, 0);
+  EXPECT_GT (up (DIR + "given.ply"), 0) << "--viewpoint before the file's";
+  for (const char* bad : {"0,0", "0,0,0,0", "0,x,1", "0,0,inf", "1:2:3"})
+    EXPECT_EQ (runCli (DIR + "terrain.xyz " + DIR + "bad.ply --viewpoint " + bad).status, 2) << bad;
+}
+
 TEST_F (Cli, UsageErrors)
 {
   // A regular tetrahedron: its circumcentre is inside, it is a sink, and its wrap is its 4 faces.

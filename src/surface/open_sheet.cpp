@@ -24,6 +24,9 @@ constexpr std::uint32_t NONE = ~std::uint32_t (0);
 constexpr double GAP_SPACINGS = 3.5;
 /** Holes bounded by more edges are not looked at for filling (the widest fillable is a few spacings). */
 constexpr std::size_t MAX_HOLE_EDGES = 24;
+/** A piece of the sheets with fewer points than this, beside one with at least CRUMB_OF times as
+  * many, is a crumb the growth left apart: its points are brought onto the larger one by tents. */
+constexpr std::size_t CRUMB_POINTS = 10, CRUMB_OF = 100;
 /** Rounds of tents, each bringing on the points one tetrahedron joins to the sheets. */
 constexpr int MAX_TENT_ROUNDS = 8;
 /** The id of a filling triangle, which need not be a face of the complex. */
@@ -254,6 +257,13 @@ public:
 
   /** Drops, at each point where the grown triangles make more than one fan, all but the largest. */
   void dropExtraFans ();
+
+  /** Takes the crumbs (CRUMB_POINTS) off the sheets, their points as if never reached. */
+  void liftCrumbs ();
+
+  /** Puts back the crumbs' triangles whose points the tents did not bring onto a sheet: a crumb
+    * that is a part of its own. */
+  void restoreCrumbs ();
 
   /** Lets go of the candidates, their index and the queues: the growth is over. */
   void forgetCandidates ()
@@ -548,6 +558,8 @@ private:
   std::vector<Triangle> triangles_;                     // grown, oriented
   std::vector<SimplexId> ids_;
   std::vector<std::uint32_t> touched_; // points a triangle touched where its front met itself
+  std::vector<Triangle> crumbs_;       // lifted by liftCrumbs(), with their ids
+  std::vector<SimplexId> crumb_ids_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> fill_partner_; // (filling triangle, one on its hole)
   std::vector<Entry> notches_;                                        // candidates with two edges on the front
   Queue queue_;                                                       // the others
@@ -595,6 +607,67 @@ SheetGrowth::sheets () const
   for (std::uint32_t i = 0; i < parent.size (); ++i)
     parent[i] = find (i);
   return parent;
+}
+
+void
+SheetGrowth::liftCrumbs ()
+{
+  // Pieces by the points they share (a crumb shares none with the sheet it lies beside).
+  const std::uint32_t nv = complex_.numVertices ();
+  std::vector<std::uint32_t> parent (nv);
+  for (std::uint32_t v = 0; v < nv; ++v)
+    parent[v] = v;
+  const auto find = [&] (std::uint32_t v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const Triangle& t : triangles_)
+    for (int k = 1; k < 3; ++k)
+      parent[find (t[k])] = find (t[0]);
+  std::vector<std::uint32_t> points (nv, 0);
+  for (std::uint32_t v = 0; v < nv; ++v)
+    points[find (v)] += on_[v];
+  const std::uint32_t largest = *std::max_element (points.begin (), points.end ());
+  const auto crumb = [&] (std::uint32_t v) {
+    const std::uint32_t n = points[find (v)];
+    return n < CRUMB_POINTS && std::size_t (n) * CRUMB_OF <= largest;
+  };
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < triangles_.size (); ++i)
+    if (crumb (triangles_[i][0]))
+    {
+      crumbs_.push_back (triangles_[i]);
+      crumb_ids_.push_back (ids_[i]);
+    }
+    else
+    {
+      triangles_[kept] = triangles_[i];
+      ids_[kept++] = ids_[i];
+    }
+  triangles_.resize (kept);
+  ids_.resize (kept);
+  for (const Triangle& t : crumbs_)
+    for (std::uint32_t v : t)
+      on_[v] = 0;
+}
+
+void
+SheetGrowth::restoreCrumbs ()
+{
+  std::vector<std::uint8_t> apart (crumbs_.size ()); // decided before any is put back
+  for (std::size_t i = 0; i < crumbs_.size (); ++i)
+    apart[i] = !on_[crumbs_[i][0]] && !on_[crumbs_[i][1]] && !on_[crumbs_[i][2]];
+  for (std::size_t i = 0; i < crumbs_.size (); ++i)
+    if (apart[i])
+    {
+      triangles_.push_back (crumbs_[i]);
+      ids_.push_back (crumb_ids_[i]);
+      for (std::uint32_t v : crumbs_[i])
+        on_[v] = 1;
+    }
+  crumbs_.clear ();
+  crumb_ids_.clear ();
 }
 
 void
@@ -917,9 +990,12 @@ openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& 
   growth.closeCracks (tetrahedra);
   growth.forgetCandidates ();
   growth.dropExtraFans ();
-  // Points buried in X (a wall between a roof and the ground X fills) come on a tent at a time.
+  growth.liftCrumbs ();
+  // Points buried in X (a wall between a roof and the ground X fills) and the crumbs' come on a
+  // tent at a time.
   for (int round = 0; round < MAX_TENT_ROUNDS && growth.detourThroughMissedPoints (tetrahedra) > 0; ++round)
   {}
+  growth.restoreCrumbs ();
   growth.fillSmallHoles ();
   // A sheet with no up or down faces out of the labelled solid: per triangle on its surface, +-area.
   const auto out_of_solid = [&] (const std::vector<Triangle>& triangles, const std::vector<SimplexId>& ids) {

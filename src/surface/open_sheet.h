@@ -38,9 +38,10 @@ namespace pcl_wrap::detail
   * their third-shortest edges in W) spans a gap the sampling resolves and is left out: separate
   * parts stay apart. Then Delaunay triangles whose points are each on the front or on no sheet yet
   * close the cracks where X cut a ring-shaped layer and reach the points X buried (where it fills
-  * the corner between a wall and the ground). A point of W the sheets miss gets a tent: a sheet triangle that
-  * is a facet of a Delaunay tetrahedron with the point as its apex is replaced by the other three
-  * facets. Holes smaller than a gap are closed by ear clipping.
+  * the corner between a wall and the ground). A point the sheets miss gets a tent: a sheet
+  * triangle that is a facet of a Delaunay tetrahedron with the point as its apex is replaced by
+  * the other three facets; a crumb the growth left beside a much larger sheet is taken off first,
+  * so that its points come onto that sheet. Holes smaller than a gap are closed by ear clipping.
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
