@@ -37,6 +37,7 @@ namespace pcl_wrap::detail
 class WrapEngine
 {
 public:
+  /** \brief Keeps references to \a points, \a weights and \a parameters: they outlive the engine. */
   WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights, const WrapParameters& parameters,
               const StageObserver& observer = StageObserver ());
   WrapEngine (const WrapEngine&) = delete;

@@ -25,7 +25,8 @@ using namespace pcl_wrap::test;
 std::pair<std::vector<std::array<PointIndex, 3>>, bool>
 surfaceWith (const std::vector<Point3>& points, bool label_now, const WrapParameters& parameters = WrapParameters ())
 {
-  detail::WrapEngine engine (points, {}, parameters);
+  const std::vector<double> no_weights; // the engine keeps a reference: not a temporary
+  detail::WrapEngine engine (points, no_weights, parameters);
   engine.selectInput ();
   engine.triangulate ();
   engine.startDefaultSurface (label_now);
