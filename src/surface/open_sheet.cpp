@@ -2,7 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/open_sheet.h"
 
+#include "util/distance.h"
 #include "util/parallel_for_each.h"
+#include "util/union_find.h"
 
 #include <algorithm>
 #include <array>
@@ -94,11 +96,7 @@ public:
       c.e = edgesOf (complex_, candidates_[i]);
       double longest = 0;
       for (int k = 0; k < 3; ++k)
-      {
-        const Point3 &a = positions_[v[k]], &b = positions_[v[(k + 1) % 3]];
-        longest = std::max (longest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                                         (a[2] - b[2]) * (a[2] - b[2]));
-      }
+        longest = std::max (longest, squaredDistance (positions_[v[k]], positions_[v[(k + 1) % 3]]));
       c.size = static_cast<float> (longest);
     });
     edge_start_.assign (complex_.size (1) + 1, 0);
@@ -328,11 +326,7 @@ private:
     std::size_t lowest_ = 2 * OCTAVES, size_ = 0;
   };
 
-  double distance (std::uint32_t a, std::uint32_t b) const
-  {
-    const Point3 &p = positions_[a], &q = positions_[b];
-    return std::sqrt ((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-  }
+  double distance (std::uint32_t a, std::uint32_t b) const { return detail::distance (positions_[a], positions_[b]); }
 
   /** The spacing at each point of W: the length of its third-shortest edge in W (its longest, with
     * fewer), or the median of its neighbours' where that is less, which the long edges of a rim
@@ -585,14 +579,8 @@ SheetGrowth::trianglesAroundVertices () const
 std::vector<std::uint32_t>
 SheetGrowth::sheets () const
 {
-  std::vector<std::uint32_t> parent (triangles_.size ()), first_on_edge (complex_.size (1), NONE);
-  for (std::uint32_t i = 0; i < parent.size (); ++i)
-    parent[i] = i;
-  const auto find = [&] (std::uint32_t i) {
-    while (parent[i] != i)
-      i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  UnionFind pieces (triangles_.size ());
+  std::vector<std::uint32_t> first_on_edge (complex_.size (1), NONE);
   for (std::uint32_t i = 0; i < triangles_.size (); ++i)
     for (int k = 0; k < 3 && ids_[i] != NO_ID; ++k)
     {
@@ -600,13 +588,14 @@ SheetGrowth::sheets () const
       if (first_on_edge[e] == NONE)
         first_on_edge[e] = i;
       else
-        parent[find (i)] = find (first_on_edge[e]);
+        pieces.attach (i, first_on_edge[e]);
     }
   for (const auto& [filling, partner] : fill_partner_)
-    parent[find (filling)] = find (partner);
-  for (std::uint32_t i = 0; i < parent.size (); ++i)
-    parent[i] = find (i);
-  return parent;
+    pieces.attach (filling, partner);
+  std::vector<std::uint32_t> sheet (triangles_.size ());
+  for (std::uint32_t i = 0; i < sheet.size (); ++i)
+    sheet[i] = pieces.find (i);
+  return sheet;
 }
 
 void
@@ -614,23 +603,16 @@ SheetGrowth::liftCrumbs ()
 {
   // Pieces by the points they share (a crumb shares none with the sheet it lies beside).
   const std::uint32_t nv = complex_.numVertices ();
-  std::vector<std::uint32_t> parent (nv);
-  for (std::uint32_t v = 0; v < nv; ++v)
-    parent[v] = v;
-  const auto find = [&] (std::uint32_t v) {
-    while (parent[v] != v)
-      v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  UnionFind pieces (nv);
   for (const Triangle& t : triangles_)
     for (int k = 1; k < 3; ++k)
-      parent[find (t[k])] = find (t[0]);
+      pieces.attach (t[k], t[0]);
   std::vector<std::uint32_t> points (nv, 0);
   for (std::uint32_t v = 0; v < nv; ++v)
-    points[find (v)] += on_[v];
+    points[pieces.find (v)] += on_[v];
   const std::uint32_t largest = *std::max_element (points.begin (), points.end ());
   const auto crumb = [&] (std::uint32_t v) {
-    const std::uint32_t n = points[find (v)];
+    const std::uint32_t n = points[pieces.find (v)];
     return n < CRUMB_POINTS && std::size_t (n) * CRUMB_OF <= largest;
   };
   std::size_t kept = 0;
