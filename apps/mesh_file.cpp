@@ -4,6 +4,7 @@
 
 #include "point_file.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -31,15 +32,66 @@ putBinary (std::ostream& out, T value)
   out.write (reinterpret_cast<const char*> (&value), sizeof (T)); // little endian on every target we build for
 }
 
+const char*
+plyType (std::uint8_t datatype)
+{
+  static const char* const NAMES[] = {"", "char", "uchar", "short", "ushort", "int", "uint", "float", "double"};
+  return datatype >= 1 && datatype <= 8 ? NAMES[datatype] : "double";
+}
+
+/** A field's value, as its PLY type, in binary. */
 void
-writePly (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+putScalar (std::ostream& out, std::uint8_t datatype, double value)
+{
+  switch (datatype)
+  {
+  case 1: putBinary (out, static_cast<std::int8_t> (value)); break;
+  case 2: putBinary (out, static_cast<std::uint8_t> (value)); break;
+  case 3: putBinary (out, static_cast<std::int16_t> (value)); break;
+  case 4: putBinary (out, static_cast<std::uint16_t> (value)); break;
+  case 5: putBinary (out, static_cast<std::int32_t> (value)); break;
+  case 6: putBinary (out, static_cast<std::uint32_t> (value)); break;
+  case 7: putBinary (out, static_cast<float> (value)); break;
+  default: putBinary (out, value); break;
+  }
+}
+
+/** A name a format's header can carry: no whitespace. */
+std::string
+headerName (std::string name)
+{
+  for (char& c : name)
+    if (std::isspace (static_cast<unsigned char> (c)))
+      c = '_';
+  return name;
+}
+
+void
+writePly (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles,
+          const PointAttributes& a)
 {
   out << "ply\nformat binary_little_endian 1.0\ncomment written by pcl_wrap\n"
-      << "element vertex " << points.size () << "\nproperty double x\nproperty double y\nproperty double z\n"
-      << "element face " << triangles.size () << "\nproperty list uchar int vertex_indices\nend_header\n";
-  for (const Point3& p : points)
-    for (double c : p)
+      << "element vertex " << points.size () << "\nproperty double x\nproperty double y\nproperty double z\n";
+  if (!a.normals.empty ())
+    out << "property float nx\nproperty float ny\nproperty float nz\n";
+  if (!a.colours.empty ())
+    out << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+        << (a.alpha ? "property uchar alpha\n" : "");
+  for (const ScalarField& f : a.scalars)
+    out << "property " << plyType (f.datatype) << ' ' << headerName (f.name) << '\n';
+  out << "element face " << triangles.size () << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    for (double c : points[i])
       putBinary (out, c);
+    if (!a.normals.empty ())
+      for (float c : a.normals[i])
+        putBinary (out, c);
+    if (!a.colours.empty ())
+      out.write (reinterpret_cast<const char*> (a.colours[i].data ()), a.alpha ? 4 : 3);
+    for (const ScalarField& f : a.scalars)
+      putScalar (out, f.datatype, f.values[i]);
+  }
   for (const auto& t : triangles)
   {
     putBinary<std::uint8_t> (out, 3);
@@ -49,17 +101,32 @@ writePly (std::ostream& out, const std::vector<Point3>& points, const std::vecto
 }
 
 void
-writeObj (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+writeObj (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles,
+          const PointAttributes& a)
 {
   out << "# written by pcl_wrap\n";
-  for (const Point3& p : points)
-    out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    const Point3& p = points[i];
+    out << "v " << p[0] << ' ' << p[1] << ' ' << p[2];
+    if (!a.colours.empty ())
+      for (int k = 0; k < 3; ++k)
+        out << ' ' << a.colours[i][k] / 255.0;
+    out << '\n';
+  }
+  for (const auto& n : a.normals)
+    out << "vn " << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
   for (const auto& t : triangles)
-    out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    if (a.normals.empty ())
+      out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    else
+      out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//"
+          << t[2] + 1 << '\n';
 }
 
 void
-writeVtk (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+writeVtk (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles,
+          const PointAttributes& a)
 {
   out << "# vtk DataFile Version 3.0\nwritten by pcl_wrap\nASCII\nDATASET POLYDATA\nPOINTS " << points.size ()
       << " double\n";
@@ -68,14 +135,49 @@ writeVtk (std::ostream& out, const std::vector<Point3>& points, const std::vecto
   out << "POLYGONS " << triangles.size () << ' ' << 4 * triangles.size () << '\n';
   for (const auto& t : triangles)
     out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  if (a.empty ())
+    return;
+  out << "POINT_DATA " << points.size () << '\n';
+  if (!a.normals.empty ())
+  {
+    out << "NORMALS normals float\n";
+    for (const auto& n : a.normals)
+      out << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
+  }
+  // First: a reader that takes one set of scalars (VTK's by default: PCL, pcl_viewer) takes these.
+  if (!a.colours.empty ())
+  {
+    const int components = a.alpha ? 4 : 3;
+    out << "COLOR_SCALARS " << (a.alpha ? "RGBA " : "RGB ") << components << '\n'; // PCL reads "RGB"
+    for (const auto& c : a.colours)
+      for (int k = 0; k < components; ++k)
+        out << c[k] / 255.0 << (k + 1 < components ? ' ' : '\n');
+  }
+  for (const ScalarField& f : a.scalars)
+  {
+    out << "SCALARS " << headerName (f.name) << " double 1\nLOOKUP_TABLE default\n";
+    for (double v : f.values)
+      out << v << '\n';
+  }
 }
 
 void
-writeOff (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles)
+writeOff (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles,
+          const PointAttributes& a)
 {
-  out << "OFF\n# written by pcl_wrap\n" << points.size () << ' ' << triangles.size () << " 0\n";
-  for (const Point3& p : points)
-    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  out << (a.colours.empty () ? "" : "C") << (a.normals.empty () ? "" : "N") << "OFF\n# written by pcl_wrap\n"
+      << points.size () << ' ' << triangles.size () << " 0\n";
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    const Point3& p = points[i];
+    out << p[0] << ' ' << p[1] << ' ' << p[2];
+    if (!a.normals.empty ())
+      out << ' ' << a.normals[i][0] << ' ' << a.normals[i][1] << ' ' << a.normals[i][2];
+    if (!a.colours.empty ()) // whole numbers: 0 to 255, as the format reads them
+      for (int k = 0; k < 4; ++k)
+        out << ' ' << int (a.colours[i][k]);
+    out << '\n';
+  }
   for (const auto& t : triangles)
     out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
@@ -140,22 +242,35 @@ isMeshFormat (const std::string& path)
 
 void
 writeMesh (const std::string& path, const std::vector<Point3>& points,
-           const std::vector<std::array<PointIndex, 3>>& triangles)
+           const std::vector<std::array<PointIndex, 3>>& triangles, const PointAttributes& attributes)
 {
   if (!isMeshFormat (path))
     throw FileError (path + ": unknown output format (expected .ply, .obj, .vtk, .off or .stl)");
   writeAtomically (path, [&] (std::ostream& out) {
     if (endsWith (path, ".ply"))
-      writePly (out, points, triangles);
+      writePly (out, points, triangles, attributes);
     else if (endsWith (path, ".obj"))
-      writeObj (out, points, triangles);
+      writeObj (out, points, triangles, attributes);
     else if (endsWith (path, ".off"))
-      writeOff (out, points, triangles);
+      writeOff (out, points, triangles, attributes);
     else if (endsWith (path, ".stl"))
       writeStl (out, points, triangles);
     else
-      writeVtk (out, points, triangles);
+      writeVtk (out, points, triangles, attributes);
   });
+}
+
+std::string
+attributesKeptBy (const std::string& path, const PointAttributes& attributes)
+{
+  PointAttributes kept = attributes;
+  if (endsWith (path, ".stl"))
+    kept = PointAttributes ();
+  if (endsWith (path, ".obj") || endsWith (path, ".off"))
+    kept.scalars.clear ();
+  if (endsWith (path, ".obj"))
+    kept.alpha = false;
+  return kept.describe ();
 }
 
 } // namespace pcl_wrap::apps

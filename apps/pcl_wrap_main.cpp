@@ -7,7 +7,10 @@
 #include "wrap_report.h"
 
 #include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/statistics_json.h>
+#include <pcl_wrap/version.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -40,7 +43,9 @@ printUsage (std::ostream& out)
          "Wraps the points of INPUT (.pcd .ply .xyz .txt .off .obj) in Edelsbrunner's Wrap surface and\n"
          "writes it to OUTPUT (.ply .obj .vtk .off .stl). The output's vertices are the input points in input\n"
          "order (.stl has no shared vertices: each triangle carries its corners),\n"
-         "so a face's indices are input point indices.\n\n"
+         "without the points skipped for a non-finite coordinate or weight. Colours, normals and\n"
+         "other fields of the input points are kept on the vertices where the format has them\n"
+         "(.ply: all; .vtk: all; .obj and .off: colours and normals; .stl: none).\n\n"
          "options:\n"
          "  --complex FILE.json   write the complex: X by dimension, the paper's W = Bd X, the output\n"
          "                        surface, hidden points, class counts, the deletion counts and the\n"
@@ -68,15 +73,17 @@ printUsage (std::ostream& out)
          "                        else up, +z)\n"
          "  --manifold            with --raw: split W where it touches itself, so that the output\n"
          "                        is a closed 2-manifold: copies of the split points follow the input\n"
-         "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input;\n"
-         "                        a .xyz/.txt input with 4 columns (x y z w) has weights anyway\n"
+         "  --weight-field NAME   weights (squared radii) from this field of a .pcd or .ply input\n"
+         "  --weights-column      weights from the 4th column of a .xyz/.txt input (x y z w ...);\n"
+         "                        without it, further columns are kept as vertex fields\n"
          "  --weight-scale S      multiply every weight by S (default "
       << defaults.weight_scale
       << ")\n"
          "  --threads N           worker threads, 0 = all cores (default "
       << defaults.num_threads
       << ")\n"
-         "  --quiet               no progress on the terminal\n"
+         "  --progress            progress on stderr even when it is not a terminal\n"
+         "  --quiet               no progress and no warnings\n"
          "  --version             the version\n"
          "  -h, --help            this text\n";
 }
@@ -84,7 +91,7 @@ printUsage (std::ostream& out)
 struct Options
 {
   std::string input, output, complex_json, stats_json, weight_field;
-  bool stats = false, quiet = false, raw = false, closed = false;
+  bool stats = false, quiet = false, progress = false, raw = false, closed = false, weights_column = false;
   int thresholds = 0; // --delta, --radius, --radius-rel and --sinks given: at most one
   WrapParameters parameters;
 };
@@ -148,6 +155,10 @@ parseOptions (int argc, char** argv)
       o.stats_json = value ();
     else if (arg == "--quiet")
       o.quiet = true;
+    else if (arg == "--progress")
+      o.progress = true;
+    else if (arg == "--weights-column")
+      o.weights_column = true;
     else if (arg == "--delta" || arg == "--radius" || arg == "--radius-rel")
     {
       const std::string v = value ();
@@ -253,9 +264,43 @@ parseOptions (int argc, char** argv)
     usageError (e.what ());
   }
   if (!apps::isMeshFormat (o.output))
-    usageError (o.output + ": unknown output format (expected .ply, .obj or .vtk)");
+    usageError (o.output + ": unknown output format (expected .ply, .obj, .vtk, .off or .stl)");
+  if (o.quiet && o.progress)
+    usageError ("--quiet and --progress contradict each other");
   return o;
 }
+
+/** Progress on stderr: a line per stage; on a terminal the running stage's share in place. */
+class ProgressReport
+{
+public:
+  ProgressReport (bool on) : on_ (on), terminal_ (::isatty (STDERR_FILENO)) {}
+
+  void stage (const std::string& name, double seconds)
+  {
+    if (!on_)
+      return;
+    std::cerr << (terminal_ ? "\r\033[K" : "") << "  " << std::left << std::setw (16) << name << std::right
+              << std::fixed << std::setprecision (3) << seconds << " s\n"
+              << std::defaultfloat;
+  }
+
+  void within (const std::string& name, double done)
+  {
+    if (!on_)
+      return;
+    const int percent = static_cast<int> (100 * done + 0.5);
+    if (terminal_)
+      std::cerr << "\r\033[K  " << std::left << std::setw (16) << name << std::right << percent << " %" << std::flush;
+    else if (percent % 25 == 0 && percent < 100) // a log: a line now and then
+      std::cerr << "  " << std::left << std::setw (16) << name << std::right << percent << " %\n";
+  }
+
+  explicit operator bool () const { return on_; }
+
+private:
+  bool on_, terminal_;
+};
 
 } // namespace
 
@@ -263,32 +308,67 @@ int
 main (int argc, char** argv)
 {
   const Options o = parseOptions (argc, argv);
-  const bool progress = !o.quiet && ::isatty (STDERR_FILENO);
+  ProgressReport progress (!o.quiet && (o.progress || ::isatty (STDERR_FILENO)));
   try
   {
-    const apps::PointFile file = apps::readPointFile (o.input, o.weight_field);
+    const apps::PointFile file = apps::readPointFile (o.input, o.weight_field, o.weights_column);
     const std::vector<Point3>& points = file.points;
-    if (progress)
-      std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input << '\n';
-    const StageObserver observer = [&] (const std::string& stage, double seconds) {
-      if (progress)
-        std::cerr << "  " << std::left << std::setw (16) << stage << std::right << std::fixed << std::setprecision (3)
-                  << seconds << " s\n" << std::defaultfloat;
+    const auto finite = [] (const Point3& p) {
+      return std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]);
     };
+    if (std::none_of (points.begin (), points.end (), finite))
+      throw apps::FileError (o.input + ": no point with finite coordinates (" + std::to_string (points.size ()) +
+                             " points, none of them finite)");
+    if (progress)
+    {
+      std::cerr << "pcl_wrap: " << points.size () << " points from " << o.input;
+      const std::string carried = file.attributes.describe ();
+      std::cerr << (carried.empty () ? "" : " with " + carried) << '\n';
+    }
     WrapParameters parameters = o.parameters;
     if (!parameters.viewpoint && file.viewpoint)
       parameters.viewpoint = *file.viewpoint;
-    const WrapResult result = computeWrap (points, file.weights, parameters, observer);
+    const WrapResult result = computeWrap (
+        points, file.weights, parameters,
+        [&] (const std::string& stage, double seconds) { progress.stage (stage, seconds); },
+        [&] (const std::string& stage, double done) { progress.within (stage, done); });
+    if (!o.quiet && !result.skipped.empty ())
+      std::cerr << "pcl_wrap: " << result.skipped.size () << (result.skipped.size () == 1 ? " point" : " points")
+                << " skipped for a non-finite coordinate or weight, and left out of the output\n";
 
-    std::vector<Point3> vertices = points;
-    for (const PointIndex c : result.copies)
-      vertices.push_back (points[c]);
-    apps::writeMesh (o.output, vertices, result.surface.triangles);
+    // The output's vertices: the points with finite coordinates in input order, then the copies.
+    std::vector<PointIndex> rows, vertex_of (points.size () + result.copies.size (), 0);
+    for (PointIndex i = 0; i < points.size (); ++i)
+      if (finite (points[i]))
+      {
+        vertex_of[i] = static_cast<PointIndex> (rows.size ());
+        rows.push_back (i);
+      }
+    for (std::size_t j = 0; j < result.copies.size (); ++j)
+    {
+      vertex_of[points.size () + j] = static_cast<PointIndex> (rows.size ());
+      rows.push_back (result.copies[j]);
+    }
+    std::vector<Point3> vertices;
+    vertices.reserve (rows.size ());
+    for (const PointIndex r : rows)
+      vertices.push_back (points[r]);
+    std::vector<std::array<PointIndex, 3>> triangles = result.surface.triangles;
+    for (auto& t : triangles)
+      for (PointIndex& v : t)
+        v = vertex_of[v];
+    apps::writeMesh (o.output, vertices, triangles, file.attributes.rows (rows));
     if (!o.complex_json.empty ())
       apps::writeAtomically (o.complex_json,
                              [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
     if (!o.stats_json.empty ())
-      apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { apps::writeStatisticsJson (out, result); });
+      apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+    if (progress)
+    {
+      const std::string kept = apps::attributesKeptBy (o.output, file.attributes);
+      std::cerr << "pcl_wrap: wrote " << o.output << ": " << triangles.size () << " triangles, " << vertices.size ()
+                << " vertices" << (kept.empty () ? "" : " with " + kept) << '\n';
+    }
     if (o.stats)
       apps::printSummary (std::cout, result.statistics);
   }

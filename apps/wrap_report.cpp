@@ -148,47 +148,6 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
 }
 
 void
-writeStatisticsJson (std::ostream& out, const WrapResult& result)
-{
-  const WrapStatistics& s = result.statistics;
-  out << std::setprecision (9) << "{\"points\":{\"input\":" << s.points_input << ",\"used\":" << s.points_used
-      << ",\"skipped\":" << s.points_skipped << ",\"duplicate\":" << s.points_duplicate
-      << ",\"hidden\":" << s.points_hidden << "},\"hidden\":";
-  writeList (out, result.hidden);
-  out << ",\"triangulation_dimension\":" << s.triangulation_dimension
-      << ",\"simplices\":{";
-  for (int k = 0; k <= 3; ++k)
-  {
-    out << (k ? "," : "") << '"' << k << "\":{";
-    for (int c = 0; c < 3; ++c)
-      out << (c ? "," : "") << '"' << toString (CLASSES[c]) << "\":" << s.simplices[k][c];
-    out << '}';
-  }
-  out << "},\"x_simplices\":{";
-  for (int k = 0; k <= 3; ++k)
-    out << (k ? "," : "") << '"' << k << "\":" << s.x_simplices[k];
-  const auto number = [&] (double x) -> std::ostream& {
-    return std::isfinite (x) ? out << x : out << "null"; // JSON has no infinity
-  };
-  out << "},\"deletion\":{\"spacing\":" << s.spacing << ",\"delta\":";
-  number (s.delta) << ",\"largest_sinks\":";
-  writeList (out, s.largest_sinks);
-  out << ",\"sinks\":" << s.sinks << ",\"deleted\":" << s.sinks_deleted << ",\"enclosed\":" << s.sinks_enclosed
-      << ",\"not_principal\":" << s.sinks_not_principal;
-  out << "},\"manifold\":{\"pinch_edges_split\":" << s.pinch_edges_split
-      << ",\"pinch_vertices_split\":" << s.pinch_vertices_split
-      << ",\"sheet_triangles_doubled\":" << s.sheet_triangles_doubled << ",\"single_layer\":"
-      << (s.single_layer ? "true" : "false") << ",\"bridge_simplices\":" << s.bridge_simplices << ",\"copies\":";
-  writeList (out, result.copies);
-  out << "},\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
-      << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
-      << ",\"isolated_vertices\":" << s.w_isolated_vertices << "},\"timings\":{";
-  for (const StageTiming& t : s.timings)
-    out << '"' << t.stage << "\":" << t.seconds << ',';
-  out << "\"total\":" << s.total_seconds << "}}\n";
-}
-
-void
 printSummary (std::ostream& out, const WrapStatistics& s)
 {
   std::size_t del[4] = {0, 0, 0, 0};

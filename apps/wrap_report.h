@@ -20,11 +20,6 @@ namespace pcl_wrap::apps
 void
 writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_points);
 
-/** \brief The statistics as JSON, with "timings": {"<stage>": seconds, ..., "total": seconds}
-  * and the indices of the hidden points. */
-void
-writeStatisticsJson (std::ostream& out, const WrapResult& result);
-
 /** \brief A short human summary of the statistics. */
 void
 printSummary (std::ostream& out, const WrapStatistics& stats);

@@ -5,6 +5,8 @@
 // the arguments and gives them names; this module converts, computes without the GIL, and hands
 // back arrays.
 #include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/statistics_json.h>
+#include <pcl_wrap/version.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -47,52 +49,6 @@ py::array_t<T>
 vector (const std::vector<Source>& values)
 {
   return filled<T> (values.data (), {py::ssize_t (values.size ())});
-}
-
-py::dict
-statistics (const WrapStatistics& s)
-{
-  py::dict d;
-  d["points_input"] = s.points_input;
-  d["points_used"] = s.points_used;
-  d["points_skipped"] = s.points_skipped;
-  d["points_duplicate"] = s.points_duplicate;
-  d["points_hidden"] = s.points_hidden;
-  d["triangulation_dimension"] = s.triangulation_dimension;
-  py::list simplices;
-  for (const auto& per_class : s.simplices)
-  {
-    py::dict k;
-    for (SimplexClass c : {SimplexClass::centered, SimplexClass::confident, SimplexClass::equivocal})
-      k[toString (c)] = per_class[static_cast<int> (c)];
-    simplices.append (k);
-  }
-  d["simplices"] = simplices;
-  d["x_simplices"] = py::cast (std::vector<std::size_t> (s.x_simplices.begin (), s.x_simplices.end ()));
-  d["collapses"] = s.collapses;
-  d["perturbations"] = s.perturbations;
-  d["spacing"] = s.spacing;
-  d["delta"] = s.delta;
-  d["largest_sinks"] = s.largest_sinks;
-  d["sinks"] = s.sinks;
-  d["sinks_deleted"] = s.sinks_deleted;
-  d["sinks_enclosed"] = s.sinks_enclosed;
-  d["sinks_not_principal"] = s.sinks_not_principal;
-  d["pinch_edges_split"] = s.pinch_edges_split;
-  d["pinch_vertices_split"] = s.pinch_vertices_split;
-  d["sheet_triangles_doubled"] = s.sheet_triangles_doubled;
-  d["tetrahedra_moved"] = s.tetrahedra_moved;
-  d["single_layer"] = s.single_layer;
-  d["bridge_simplices"] = s.bridge_simplices;
-  d["w_triangles"] = s.w_triangles;
-  d["w_dangling_edges"] = s.w_dangling_edges;
-  d["w_isolated_vertices"] = s.w_isolated_vertices;
-  py::dict timings; // in the order the stages ran
-  for (const StageTiming& t : s.timings)
-    timings[t.stage.c_str ()] = t.seconds;
-  d["timings"] = timings;
-  d["total_seconds"] = s.total_seconds;
-  return d;
 }
 
 py::dict
@@ -150,10 +106,19 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
     weights.assign (w.data (), w.data () + w.size ());
   }
 
+  // Between stages, and within the triangulation, the GIL is taken back for a moment to see
+  // whether Ctrl-C was pressed: the KeyboardInterrupt then ends the computation.
+  const auto check_signals = [] {
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals () != 0)
+      throw py::error_already_set ();
+  };
   WrapResult result;
   {
     py::gil_scoped_release release; // other Python threads run while the wrap is computed
-    result = computeWrap (positions, weights, parameters);
+    result = computeWrap (
+        positions, weights, parameters, [&] (const std::string&, double) { check_signals (); },
+        [&] (const std::string&, double) { check_signals (); });
   }
 
   py::dict out = surface (result.surface);
@@ -164,7 +129,7 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
   for (const auto& [duplicate, kept] : result.duplicates)
     duplicates.insert (duplicates.end (), {duplicate, kept});
   out["duplicates"] = matrix<std::int64_t> (duplicates.data (), result.duplicates.size (), 2);
-  out["statistics"] = statistics (result.statistics);
+  out["statistics"] = statisticsJson (result); // the package reads it: the CLI's keys
   if (parameters.keep_complex)
   {
     out["complex"] = complex (result);
@@ -193,6 +158,7 @@ kindName (const Threshold& t)
 PYBIND11_MODULE (_core, m)
 {
   m.doc () = "pcl_wrap's engine; use the functions of the pcl_wrap package";
+  m.attr ("__version__") = PCL_WRAP_VERSION;
 
   py::class_<Threshold> threshold (m, "Threshold",
                                    "Which sinks the construction deletes to wrap tighter (none by default).");

@@ -15,12 +15,14 @@ PACKAGES=(
   libroscpp-dev libnodeletlib-dev libnodeletlib-tools libsensor-msgs-dev libpcl-conversions-dev
   libpcl-msgs-dev libvisualization-msgs-dev python3-roslaunch python3-rostopic rosout catkin
   python3-catkin-pkg
+  # rostopic echo/hz/pub on the node's topics: the messages' Python modules
+  python3-sensor-msgs python3-pcl-msgs python3-visualization-msgs python3-std-msgs python3-geometry-msgs
   # Pictures: pcl_viewer and an X server without a display
   pcl-tools xvfb xauth xdotool python3-pil
   # The benchmark's peers from Python (Open3D's ball pivoting and alpha shape) and its plots
   python3-open3d python3-matplotlib python3-scipy
-  # The Python package
-  python3-dev pybind11-dev python3-numpy
+  # The Python package, and pip-installing it into a virtual environment
+  python3-dev pybind11-dev python3-numpy python3-venv python3-pip python3-setuptools python3-wheel
 )
 
 missing=()

@@ -82,13 +82,13 @@ computeWrap (const std::vector<Point3>& points, const WrapParameters& parameters
 
 WrapResult
 computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights, const WrapParameters& parameters,
-             const StageObserver& observer)
+             const StageObserver& observer, const ProgressObserver& progress)
 {
   checkParameters (parameters);
   if (!weights.empty () && weights.size () != points.size ())
     throw std::invalid_argument ("computeWrap: " + std::to_string (weights.size ()) + " weights for " +
                                  std::to_string (points.size ()) + " points");
-  const auto compute = [&] { return detail::WrapEngine (points, weights, parameters, observer).run (); };
+  const auto compute = [&] { return detail::WrapEngine (points, weights, parameters, observer, progress).run (); };
   if (parameters.num_threads == 0)
     return compute ();
   // A thread count of its own, for this call only: other TBB users in the process keep theirs.

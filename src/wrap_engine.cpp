@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_engine.h"
 
+#include "delaunay/spacing.h"
 #include "filtration_data.h"
 #include "surface/single_layer.h"
 #include "util/parallel_for_each.h"
@@ -51,8 +52,13 @@ sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<dou
 } // namespace
 
 WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights,
-                        const WrapParameters& parameters, const StageObserver& observer)
-  : points_ (points), weights_ (weights), parameters_ (parameters), observer_ (observer),
+                        const WrapParameters& parameters, const StageObserver& observer,
+                        const ProgressObserver& progress)
+  : points_ (points),
+    weights_ (weights),
+    parameters_ (parameters),
+    observer_ (observer),
+    progress_ (progress),
     clock_ (result_.statistics, observer_)
 {}
 
@@ -97,7 +103,10 @@ WrapEngine::selectInput ()
 void
 WrapEngine::triangulate ()
 {
-  triangulation_ = detail::triangulate (input_.positions, input_.weights);
+  std::function<void (double)> progress;
+  if (progress_)
+    progress = [this] (double done) { progress_ ("triangulation", done); };
+  triangulation_ = detail::triangulate (input_.positions, input_.weights, progress);
   dimension_ = triangulation_.dimension;
   WrapStatistics& stats = result_.statistics;
   stats.triangulation_dimension = dimension_;
@@ -154,6 +163,9 @@ WrapEngine::buildComplex ()
   SimplicialComplex built (dimension_, static_cast<std::uint32_t> (input_indices_.size ()),
                            std::move (triangulation_.top_simplices), neighbours);
   complex_ = std::make_shared<SimplicialComplex> (std::move (built));
+  if (complex_->size (1) != 0) // reported always: it says what scale a threshold is at
+    result_.statistics.spacing =
+        medianNearestNeighbourDistance (complex_->vertices (1, 0), complex_->size (1), 1, vertex_positions_);
   if (defaultSurface ())
     tetrahedra_.attach (*complex_);
   triangulation_ = {};

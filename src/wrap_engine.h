@@ -39,7 +39,7 @@ class WrapEngine
 public:
   /** \brief Keeps references to \a points, \a weights and \a parameters: they outlive the engine. */
   WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights, const WrapParameters& parameters,
-              const StageObserver& observer = StageObserver ());
+              const StageObserver& observer = StageObserver (), const ProgressObserver& progress = ProgressObserver ());
   WrapEngine (const WrapEngine&) = delete;
   WrapEngine& operator= (const WrapEngine&) = delete;
 
@@ -93,7 +93,8 @@ private:
   const std::vector<double>& weights_;
   const WrapParameters& parameters_;
   WrapResult result_;
-  const StageObserver observer_; // a copy: the caller's may be a temporary
+  const StageObserver observer_; // copies: the caller's may be temporaries
+  const ProgressObserver progress_;
   StageClock clock_;
 
   InputPoints input_;

@@ -11,6 +11,8 @@
 #include <pcl_wrap/compute_wrap.h>
 
 #include <pcl/PolygonMesh.h>
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
 #include <pcl/io/obj_io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -19,7 +21,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -313,20 +319,31 @@ TEST_F (Cli, WeightsFromXyzColumnOrPcdField)
   };
   // Without --weight-field a PCD input has no weights: nothing is hidden.
   EXPECT_NE (statsOf (DIR + "weighted.pcd").find ("\"hidden\":[]"), std::string::npos);
-  // With the field named, and from the 4th column, the centre is hidden.
-  for (const std::string arguments : {DIR + "weighted.xyz", DIR + "weighted.pcd --weight-field intensity"})
+  // Nor a .xyz file's 4th column without --weights-column: it is a field (an intensity, say).
+  EXPECT_NE (statsOf (DIR + "weighted.xyz").find ("\"hidden\":[]"), std::string::npos);
+  // With the field named, and from the 4th column when asked, the centre is hidden.
+  for (const std::string arguments :
+       {DIR + "weighted.xyz --weights-column", DIR + "weighted.pcd --weight-field intensity"})
     EXPECT_NE (statsOf (arguments).find ("\"hidden\":[4]"), std::string::npos) << arguments;
   // --weight-scale 0 is the unweighted wrap: nothing hidden.
-  EXPECT_NE (statsOf (DIR + "weighted.xyz --weight-scale 0").find ("\"hidden\":[]"), std::string::npos);
+  EXPECT_NE (statsOf (DIR + "weighted.xyz --weights-column --weight-scale 0").find ("\"hidden\":[]"),
+             std::string::npos);
+  // A non-finite weight skips its point, with a warning, as a non-finite coordinate does.
+  writeText (DIR + "nanweight.xyz", "1 1 1 0\n1 -1 -1 0\n-1 1 -1 nan\n-1 -1 1 0\n0 0 0 0\n");
+  const std::string nan = statsOf (DIR + "nanweight.xyz --weights-column");
+  EXPECT_NE (nan.find ("\"skipped\":1"), std::string::npos) << nan;
+  const CliRun warned = runCli (DIR + "nanweight.xyz " + DIR + "w.ply --weights-column");
+  EXPECT_EQ (warned.status, 0);
+  EXPECT_NE (warned.err.find ("1 point skipped"), std::string::npos) << warned.err;
 
-  // Errors: a field for a text file, a missing field, a non-finite weight, a bad scale.
-  writeText (DIR + "nanweight.xyz", "0 0 0 1\n1 0 0 nan\n");
+  // Errors: a field for a text file, a column for a PCD file, no 4th column, a missing field, a
+  // bad scale.
+  writeText (DIR + "three.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
   EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weight-field intensity").status, 1);
+  EXPECT_EQ (runCli (DIR + "weighted.pcd " + DIR + "w.ply --weights-column").status, 1);
+  EXPECT_EQ (runCli (DIR + "three.xyz " + DIR + "w.ply --weights-column").status, 1);
   EXPECT_EQ (runCli (DIR + "weighted.pcd " + DIR + "w.ply --weight-field curvature").status, 1);
-  const CliRun nan = runCli (DIR + "nanweight.xyz " + DIR + "w.ply");
-  EXPECT_EQ (nan.status, 1);
-  EXPECT_NE (nan.err.find ("point 1"), std::string::npos) << nan.err;
-  EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weight-scale inf").status, 2);
+  EXPECT_EQ (runCli (DIR + "weighted.xyz " + DIR + "w.ply --weights-column --weight-scale inf").status, 2);
 }
 
 TEST_F (Cli, SinkDeletionOptions)
@@ -341,8 +358,8 @@ TEST_F (Cli, SinkDeletionOptions)
         runCli (DIR + "torus1000.xyz " + DIR + "opened.ply --stats-json " + DIR + "opened.json " + options);
     ASSERT_EQ (run.status, 0) << run.err;
     writeText (DIR + "deleted.py", "import json, sys\n"
-                                   "d = json.load(open(sys.argv[1]))['deletion']\n"
-                                   "assert d['deleted'] >= 1 and d['sinks'] > 0 and d['spacing'] > 0, d\n");
+                                   "s = json.load(open(sys.argv[1])); d = s['deletion']\n"
+                                   "assert d['deleted'] >= 1 and d['sinks'] > 0 and s['spacing'] > 0, s\n");
     EXPECT_EQ (std::system (("python3 " + DIR + "deleted.py " + DIR + "opened.json").c_str ()), 0);
   }
   for (const std::string bad : {"--radius -1", "--radius-rel 0", "--mode sideways", "--sinks 0", "--delta x",
@@ -446,6 +463,172 @@ TEST_F (Cli, SheetFacesTheViewpointGivenOrThePcdFilesOwn)
   EXPECT_GT (up (DIR + "given.ply"), 0) << "--viewpoint before the file's";
   for (const char* bad : {"0,0", "0,0,0,0", "0,x,1", "0,0,inf", "1:2:3"})
     EXPECT_EQ (runCli (DIR + "terrain.xyz " + DIR + "bad.ply --viewpoint " + bad).status, 2) << bad;
+}
+
+/** A sphere's points with a colour, a normal and a curvature each, in every point format. */
+pcl::PointCloud<pcl::PointXYZRGBNormal>
+colouredSphere (std::size_t n)
+{
+  pcl::PointCloud<pcl::PointXYZRGBNormal> cloud;
+  for (const auto& p : sphereSample (n, 6, 1e-3))
+  {
+    pcl::PointXYZRGBNormal q;
+    q.x = float (p[0]), q.y = float (p[1]), q.z = float (p[2]);
+    q.r = std::uint8_t (cloud.size () % 251), q.g = std::uint8_t (cloud.size () % 7), q.b = 200;
+    q.normal_x = float (p[0]), q.normal_y = float (p[1]), q.normal_z = float (p[2]);
+    q.curvature = float (cloud.size ()) / 8;
+    cloud.push_back (q);
+  }
+  return cloud;
+}
+
+TEST_F (Cli, ColoursNormalsAndFieldsReachTheOutputVertices)
+{
+  const auto cloud = colouredSphere (600);
+  ASSERT_EQ (pcl::io::savePCDFileBinary (DIR + "coloured.pcd", cloud), 0);
+  ASSERT_EQ (pcl::io::savePLYFileBinary (DIR + "coloured.ply", cloud), 0);
+  for (const std::string input : {"coloured.pcd", "coloured.ply"})
+  {
+    SCOPED_TRACE (input);
+    for (const std::string output : {"kept.ply", "kept.obj", "kept.off", "kept.vtk"})
+      ASSERT_EQ (runCli (DIR + input + " " + DIR + output + " --quiet").status, 0) << output;
+    // .ply: everything, read back by PCL.
+    pcl::PolygonMesh mesh;
+    ASSERT_GE (pcl::io::loadPLYFile (DIR + "kept.ply", mesh), 0);
+    for (const char* field : {"rgb", "normal_x", "normal_y", "normal_z", "curvature"})
+      EXPECT_NE (pcl::getFieldIndex (mesh.cloud, field), -1) << field;
+    pcl::PointCloud<pcl::PointXYZRGBNormal> back;
+    pcl::fromPCLPointCloud2 (mesh.cloud, back);
+    ASSERT_EQ (back.size (), cloud.size ());
+    for (std::size_t i = 0; i < cloud.size (); ++i)
+      ASSERT_TRUE (back[i].r == cloud[i].r && back[i].g == cloud[i].g && back[i].b == cloud[i].b &&
+                   back[i].normal_z == cloud[i].normal_z && back[i].curvature == cloud[i].curvature)
+          << i;
+    // .obj and .off: colours and normals, read back by the tool's own reader.
+    for (const std::string output : {"kept.obj", "kept.off"})
+    {
+      const apps::PointFile file = apps::readPointFile (DIR + output);
+      ASSERT_EQ (file.attributes.colours.size (), cloud.size ()) << output;
+      ASSERT_EQ (file.attributes.normals.size (), cloud.size ()) << output;
+      for (std::size_t i = 0; i < cloud.size (); ++i)
+        ASSERT_TRUE (file.attributes.colours[i][0] == cloud[i].r && file.attributes.colours[i][1] == cloud[i].g &&
+                     std::abs (file.attributes.normals[i][0] - cloud[i].normal_x) < 1e-6)
+            << output << " " << i;
+    }
+    // .vtk: point data, and PCL reads the colours.
+    std::ifstream vtk (DIR + "kept.vtk");
+    const std::string text ((std::istreambuf_iterator<char> (vtk)), std::istreambuf_iterator<char> ());
+    for (const char* part : {"POINT_DATA 600", "NORMALS normals float", "COLOR_SCALARS RGB 3", "SCALARS curvature"})
+      EXPECT_NE (text.find (part), std::string::npos) << part;
+    pcl::PolygonMesh from_vtk;
+    ASSERT_GT (pcl::io::loadPolygonFileVTK (DIR + "kept.vtk", from_vtk), 0);
+    EXPECT_NE (pcl::getFieldIndex (from_vtk.cloud, "rgba"), -1); // as PCL's VTK reader names it
+    pcl::PointCloud<pcl::PointXYZRGBNormal> vtk_points;
+    pcl::fromPCLPointCloud2 (from_vtk.cloud, vtk_points);
+    ASSERT_EQ (vtk_points.size (), cloud.size ());
+    EXPECT_TRUE (vtk_points[123].r == cloud[123].r && vtk_points[123].g == cloud[123].g);
+  }
+}
+
+TEST_F (Cli, XyzColumnsBecomeNormalsColoursOrFields)
+{
+  const auto points = sphereSample (400, 8, 1e-3);
+  std::ostringstream normals, colours, four;
+  normals.precision (17), colours.precision (17), four.precision (17);
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    const Point3& p = points[i];
+    const double length = std::sqrt (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    normals << p[0] << ' ' << p[1] << ' ' << p[2] << ' ' << p[0] / length << ' ' << p[1] / length << ' '
+            << p[2] / length << '\n';
+    colours << p[0] << ' ' << p[1] << ' ' << p[2] << ' ' << i % 256 << " 0 255\n";
+    four << p[0] << ' ' << p[1] << ' ' << p[2] << ' ' << 1000.5 + double (i) << '\n';
+  }
+  writeText (DIR + "normals.xyz", normals.str ());
+  writeText (DIR + "colours.xyz", colours.str ());
+  writeText (DIR + "four.xyz", four.str ());
+  const apps::PointFile with_normals = apps::readPointFile (DIR + "normals.xyz");
+  EXPECT_EQ (with_normals.attributes.normals.size (), points.size ());
+  EXPECT_TRUE (with_normals.attributes.colours.empty () && with_normals.attributes.scalars.empty ());
+  const apps::PointFile with_colours = apps::readPointFile (DIR + "colours.xyz");
+  ASSERT_EQ (with_colours.attributes.colours.size (), points.size ());
+  EXPECT_EQ (with_colours.attributes.colours[300][0], 300 % 256);
+  EXPECT_TRUE (with_colours.attributes.normals.empty ());
+  // The common LiDAR export, x y z intensity: all points used, the 4th column a vertex field.
+  const apps::PointFile with_field = apps::readPointFile (DIR + "four.xyz");
+  EXPECT_TRUE (with_field.weights.empty ());
+  ASSERT_EQ (with_field.attributes.scalars.size (), 1u);
+  EXPECT_EQ (with_field.attributes.scalars[0].name, "field4");
+  ASSERT_EQ (runCli (DIR + "four.xyz " + DIR + "four.ply --quiet").status, 0);
+  pcl::PolygonMesh mesh;
+  ASSERT_GE (pcl::io::loadPLYFile (DIR + "four.ply", mesh), 0);
+  EXPECT_EQ (mesh.polygons.size (), 2 * points.size () - 4); // a sphere through every point
+  const int field = pcl::getFieldIndex (mesh.cloud, "field4");
+  ASSERT_NE (field, -1);
+  double value = 0;
+  std::memcpy (&value, &mesh.cloud.data[7 * mesh.cloud.point_step + mesh.cloud.fields[field].offset], sizeof value);
+  EXPECT_EQ (value, 1007.5);
+}
+
+TEST_F (Cli, NonFinitePointsAreLeftOutOfTheOutput)
+{
+  auto cloud = colouredSphere (300);
+  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  for (const std::size_t i : {0, 17, 299})
+    cloud[i].x = nan;
+  ASSERT_EQ (pcl::io::savePCDFileBinary (DIR + "holes.pcd", cloud), 0);
+  const CliRun run = runCli (DIR + "holes.pcd " + DIR + "holes.ply");
+  ASSERT_EQ (run.status, 0) << run.err;
+  EXPECT_NE (run.err.find ("3 points skipped"), std::string::npos) << run.err;
+  pcl::PolygonMesh mesh;
+  ASSERT_GE (pcl::io::loadPLYFile (DIR + "holes.ply", mesh), 0);
+  pcl::PointCloud<pcl::PointXYZRGBNormal> back;
+  pcl::fromPCLPointCloud2 (mesh.cloud, back);
+  ASSERT_EQ (back.size (), 297u); // the finite points, in input order, their fields with them
+  for (std::size_t i = 0, k = 0; i < cloud.size (); ++i)
+    if (std::isfinite (cloud[i].x))
+    {
+      ASSERT_EQ (back[k].curvature, cloud[i].curvature) << i;
+      ASSERT_TRUE (std::isfinite (back[k].x));
+      ++k;
+    }
+  EXPECT_EQ (mesh.polygons.size (), 2 * 297u - 4);
+  for (const auto& polygon : mesh.polygons)
+    for (const auto v : polygon.vertices)
+      ASSERT_LT (v, 297u);
+  // No finite point at all, like no point at all: an error, no output.
+  writeText (DIR + "all_nan.xyz", "nan 0 0\n0 nan 0\ninf 1 1\n");
+  writeText (DIR + "nothing.xyz", "# no points\n");
+  for (const std::string input : {"all_nan.xyz", "nothing.xyz"})
+  {
+    std::remove ((DIR + "none.ply").c_str ());
+    const CliRun none = runCli (DIR + input + " " + DIR + "none.ply");
+    EXPECT_EQ (none.status, 1) << input;
+    EXPECT_NE (none.err.find (input), std::string::npos) << none.err;
+    EXPECT_FALSE (exists (DIR + "none.ply")) << input;
+  }
+}
+
+TEST_F (Cli, ProgressOnStderrWhenAskedOrOnATerminal)
+{
+  // Enough points for the triangulation to report its progress within.
+  writeText (DIR + "progress.xyz", xyzText (sphereSample (120000, 9, 1e-3)));
+  const CliRun shown = runCli (DIR + "progress.xyz " + DIR + "progress.ply --progress");
+  ASSERT_EQ (shown.status, 0) << shown.err;
+  for (const char* line : {"pcl_wrap: 120000 points from", "  triangulation   25 %", "  triangulation   75 %",
+                           "  collapse", "pcl_wrap: wrote "})
+    EXPECT_NE (shown.err.find (line), std::string::npos) << line << " in:\n" << shown.err;
+  // Not a terminal and not asked: nothing on stderr. Inserted in rounds to report progress or
+  // all at once, the points give the same triangulation, and the same surface.
+  const CliRun quiet = runCli (DIR + "progress.xyz " + DIR + "quiet.ply");
+  ASSERT_EQ (quiet.status, 0);
+  EXPECT_EQ (quiet.err, "");
+  const auto bytes = [] (const std::string& path) {
+    std::ifstream in (path, std::ios::binary);
+    return std::string ((std::istreambuf_iterator<char> (in)), std::istreambuf_iterator<char> ());
+  };
+  EXPECT_EQ (bytes (DIR + "progress.ply"), bytes (DIR + "quiet.ply"));
+  EXPECT_EQ (runCli (DIR + "progress.xyz " + DIR + "progress.ply --progress --quiet").status, 2);
 }
 
 TEST_F (Cli, UsageErrors)

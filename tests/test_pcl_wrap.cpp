@@ -152,9 +152,44 @@ TEST (PclWrap, WeightsFromAVectorOrAPointField)
   };
   EXPECT_TRUE (fails ([] (auto& w) { w.setWeights ({1.0, 2.0}); }));
   EXPECT_TRUE (fails ([] (auto& w) { w.setWeightField ("curvature"); }));
+  // A non-finite weight skips its point (reported), as a non-finite coordinate does.
   auto nan_weights = weights;
   nan_weights[7] = std::numeric_limits<double>::quiet_NaN ();
-  EXPECT_TRUE (fails ([&] (auto& w) { w.setWeights (nan_weights); }));
+  Wrap<pcl::PointXYZI> skipping;
+  skipping.setInputCloud (cloud);
+  skipping.setWeights (nan_weights);
+  skipping.reconstruct (mesh);
+  EXPECT_EQ (skipping.getResult ().skipped, std::vector<PointIndex> ({7}));
+  EXPECT_FALSE (mesh.polygons.empty ());
+  for (const auto& polygon : mesh.polygons)
+    for (const auto v : polygon.vertices)
+      EXPECT_NE (v, 7u);
+}
+
+/** The mesh's cloud is the input: colours, normals and every other field reach the mesh. */
+TEST (PclWrap, TheMeshKeepsEveryFieldOfThePoints)
+{
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZRGBNormal>> ();
+  for (const auto& p : sphereSample (500, 3))
+  {
+    pcl::PointXYZRGBNormal q;
+    q.x = float (p[0]), q.y = float (p[1]), q.z = float (p[2]);
+    q.r = std::uint8_t (cloud->size () % 256), q.g = 7, q.b = 9;
+    q.normal_x = q.x, q.normal_y = q.y, q.normal_z = q.z, q.curvature = float (cloud->size ());
+    cloud->push_back (q);
+  }
+  Wrap<pcl::PointXYZRGBNormal> wrap;
+  wrap.setInputCloud (cloud);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  ASSERT_EQ (mesh.polygons.size (), 2 * cloud->size () - 4);
+  pcl::PointCloud<pcl::PointXYZRGBNormal> back;
+  pcl::fromPCLPointCloud2 (mesh.cloud, back);
+  ASSERT_EQ (back.size (), cloud->size ());
+  for (std::size_t i = 0; i < back.size (); ++i)
+    ASSERT_TRUE (back[i].rgba == (*cloud)[i].rgba && back[i].normal_y == (*cloud)[i].normal_y &&
+                 back[i].curvature == (*cloud)[i].curvature)
+        << i;
 }
 
 /** A depth image (organised, NaN where nothing came back) is a single layer: one open sheet, no

@@ -7,6 +7,7 @@
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
 
+#include <exception>
 #include <memory>
 
 namespace pcl_wrap_ros
@@ -16,7 +17,14 @@ class WrapNodelet : public nodelet::Nodelet
 {
   void onInit () override
   {
-    publisher_ = std::make_unique<WrapPublisher> (getNodeHandle (), getPrivateNodeHandle ());
+    try
+    {
+      publisher_ = std::make_unique<WrapPublisher> (getNodeHandle (), getPrivateNodeHandle ());
+    }
+    catch (const std::exception& e) // the manager runs on: this nodelet stays idle, and says why
+    {
+      NODELET_FATAL_STREAM ("pcl_wrap: " << e.what () << "; this nodelet does not subscribe");
+    }
   }
 
   std::unique_ptr<WrapPublisher> publisher_;

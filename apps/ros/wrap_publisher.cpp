@@ -6,6 +6,7 @@
 #include <pcl_wrap/wrap.h>
 
 #include <pcl/PCLPointCloud2.h>
+#include <pcl/common/io.h>
 #include <pcl/PolygonMesh.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
@@ -14,12 +15,36 @@
 #include <visualization_msgs/Marker.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace pcl_wrap_ros
 {
+
+namespace
+{
+
+/** ~name into \a value when it is set; a value of another type is an error, not the default. */
+template <class T>
+bool
+get (const ros::NodeHandle& nh, const std::string& name, T& value, const std::string& expected)
+{
+  if (!nh.hasParam (name))
+    return false;
+  if (!nh.getParam (name, value))
+    throw std::invalid_argument ("~" + name + " must be " + expected);
+  return true;
+}
+
+const std::vector<std::string> PARAMETERS = {"delta",     "radius",  "radius_rel",   "sinks",
+                                             "mode",      "region",  "output",       "manifold",
+                                             "viewpoint", "threads", "weight_scale", "weight_field"};
+
+} // namespace
 
 pcl_wrap::WrapParameters
 readParameters (const ros::NodeHandle& private_nh)
@@ -28,28 +53,32 @@ readParameters (const ros::NodeHandle& private_nh)
   // One threshold: ~delta, ~radius, ~radius_rel or ~sinks, not two of them.
   int thresholds = 0;
   double value = 0.0;
-  if (private_nh.getParam ("delta", value) && ++thresholds)
+  if (get (private_nh, "delta", value, "a number") && ++thresholds)
     p.threshold = pcl_wrap::Threshold::size (value);
-  if (private_nh.getParam ("radius", value) && ++thresholds)
-    p.threshold = pcl_wrap::Threshold::radius (value);
-  if (private_nh.getParam ("radius_rel", value) && ++thresholds)
-    p.threshold = pcl_wrap::Threshold::relativeRadius (value);
-  std::string mode = p.deletion == pcl_wrap::SinkDeletion::front ? "front" : "global";
-  private_nh.param ("mode", mode, mode);
-  if (mode != "front" && mode != "global")
-    throw std::invalid_argument ("~mode must be front or global, not '" + mode + "'");
-  p.deletion = mode == "front" ? pcl_wrap::SinkDeletion::front : pcl_wrap::SinkDeletion::global;
+  for (const char* name : {"radius", "radius_rel"})
+    if (get (private_nh, name, value, "a number > 0") && ++thresholds)
+    {
+      if (!(value > 0 && std::isfinite (value)))
+        throw std::invalid_argument (std::string ("~") + name + " must be a number > 0");
+      p.threshold = name == std::string ("radius") ? pcl_wrap::Threshold::radius (value)
+                                                   : pcl_wrap::Threshold::relativeRadius (value);
+    }
   int sinks = 0;
-  if (private_nh.getParam ("sinks", sinks) && ++thresholds)
+  if (get (private_nh, "sinks", sinks, "a whole number >= 1") && ++thresholds)
   {
     if (sinks < 1)
-      throw std::invalid_argument ("~sinks must be >= 1");
+      throw std::invalid_argument ("~sinks must be a whole number >= 1");
     p.threshold = pcl_wrap::Threshold::largest (static_cast<std::size_t> (sinks));
   }
   if (thresholds > 1)
     throw std::invalid_argument ("~delta, ~radius, ~radius_rel and ~sinks each set the threshold: give one");
+  std::string mode = "front";
+  get (private_nh, "mode", mode, "front or global");
+  if (mode != "front" && mode != "global")
+    throw std::invalid_argument ("~mode must be front or global, not '" + mode + "'");
+  p.deletion = mode == "front" ? pcl_wrap::SinkDeletion::front : pcl_wrap::SinkDeletion::global;
   std::vector<double> region;
-  if (private_nh.getParam ("region", region))
+  if (get (private_nh, "region", region, "a list of numbers"))
   {
     if (region.size () == 4)
       p.region = pcl_wrap::Region::sphere (region[0], region[1], region[2], region[3]);
@@ -58,43 +87,115 @@ readParameters (const ros::NodeHandle& private_nh)
     else
       throw std::invalid_argument ("~region takes [x, y, z, r] (a sphere) or [x0, y0, z0, x1, y1, z1] (a box)");
   }
-  std::string output = p.output == pcl_wrap::Output::raw      ? "raw"
-                       : p.output == pcl_wrap::Output::closed ? "closed"
-                                                              : "surface";
-  private_nh.param ("output", output, output);
+  std::string output = "surface";
+  get (private_nh, "output", output, "surface, closed or raw");
   if (output != "surface" && output != "closed" && output != "raw")
     throw std::invalid_argument ("~output must be surface, closed or raw, not '" + output + "'");
   p.output = output == "raw"      ? pcl_wrap::Output::raw
              : output == "closed" ? pcl_wrap::Output::closed
                                   : pcl_wrap::Output::surface;
-  private_nh.param ("manifold", p.manifold, p.manifold);
+  get (private_nh, "manifold", p.manifold, "true or false");
+  if (p.manifold && p.output != pcl_wrap::Output::raw)
+    throw std::invalid_argument (
+        "~manifold splits the raw W (~output raw); the default surface is a 2-manifold already");
   std::vector<double> viewpoint;
-  if (private_nh.getParam ("viewpoint", viewpoint))
+  if (get (private_nh, "viewpoint", viewpoint, "a list of three numbers"))
   {
     if (viewpoint.size () != 3)
       throw std::invalid_argument ("~viewpoint takes [x, y, z]: where an open sheet faces");
     p.viewpoint = std::array<double, 3>{viewpoint[0], viewpoint[1], viewpoint[2]};
   }
-  int threads = static_cast<int> (p.num_threads);
-  private_nh.param ("threads", threads, threads);
-  p.num_threads = static_cast<unsigned> (std::max (threads, 0));
-  private_nh.param ("weight_scale", p.weight_scale, p.weight_scale);
-  p.keep_complex = false; // the node publishes W only
+  int threads = 0;
+  get (private_nh, "threads", threads, "a whole number (0: all cores)");
+  if (threads < 0 || threads > 4096)
+    throw std::invalid_argument ("~threads must be a whole number from 0 (all cores) to 4096");
+  p.num_threads = static_cast<unsigned> (threads);
+  get (private_nh, "weight_scale", p.weight_scale, "a number");
+  std::string field;
+  get (private_nh, "weight_field", field, "a field name");
+  p.keep_complex = false;        // the node publishes the surface only
+  pcl_wrap::checkParameters (p); // what depends on several: a region needs a size threshold, ...
   return p;
 }
 
+std::vector<std::string>
+unknownParameters (const ros::NodeHandle& private_nh)
+{
+  std::vector<std::string> names, unknown;
+  ros::param::getParamNames (names);
+  const std::string prefix = private_nh.getNamespace () + "/";
+  for (const std::string& name : names)
+    if (name.rfind (prefix, 0) == 0 &&
+        std::find (PARAMETERS.begin (), PARAMETERS.end (), name.substr (prefix.size ())) == PARAMETERS.end ())
+      unknown.push_back (name);
+  return unknown;
+}
+
 WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private_nh)
-  : parameters_ (readParameters (private_nh)), weight_field_ (private_nh.param<std::string> ("weight_field", ""))
-  , mesh_publisher_ (nh.advertise<pcl_msgs::PolygonMesh> ("mesh", 1))
-  , marker_publisher_ (nh.advertise<visualization_msgs::Marker> ("marker", 1))
-  , subscriber_ (nh.subscribe ("cloud", 1, &WrapPublisher::onCloud, this))
-{}
+  : parameters_ (readParameters (private_nh)),
+    weight_field_ (private_nh.param<std::string> ("weight_field", "")),
+    mesh_publisher_ (nh.advertise<pcl_msgs::PolygonMesh> ("mesh", 1, true)) // latched: RViz opened later sees it
+    ,
+    marker_publisher_ (nh.advertise<visualization_msgs::Marker> ("marker", 1, true)),
+    subscriber_ (nh.subscribe ("cloud", 1, &WrapPublisher::onCloud, this))
+{
+  for (const std::string& name : unknownParameters (private_nh))
+    ROS_WARN_STREAM ("pcl_wrap: unknown parameter " << name << " ignored");
+  ROS_INFO_STREAM ("pcl_wrap: wrapping " << subscriber_.getTopic () << " into " << mesh_publisher_.getTopic ()
+                                         << " and " << marker_publisher_.getTopic ());
+}
 
 namespace
 {
 
+/** Each point's colour from an "rgb" or "rgba" field, or nothing when there is none. */
+std::vector<std::array<float, 4>>
+coloursOf (const pcl::PCLPointCloud2& cloud)
+{
+  std::vector<std::array<float, 4>> colours;
+  for (const pcl::PCLPointField& f : cloud.fields)
+    if ((f.name == "rgb" || f.name == "rgba") && pcl::getFieldSize (f.datatype) == 4 &&
+        f.offset + 4 <= cloud.point_step)
+    {
+      const std::size_t n = std::size_t (cloud.width) * cloud.height;
+      for (std::size_t i = 0; i < n && (i + 1) * cloud.point_step <= cloud.data.size (); ++i)
+      {
+        std::uint32_t packed; // 0xAARRGGBB
+        std::memcpy (&packed, &cloud.data[i * cloud.point_step + f.offset], 4);
+        colours.push_back ({float ((packed >> 16) & 255) / 255.f, float ((packed >> 8) & 255) / 255.f,
+                            float (packed & 255) / 255.f, f.name == "rgba" ? float (packed >> 24) / 255.f : 1.f});
+      }
+      break;
+    }
+  return colours;
+}
+
+/** The cloud's points in one block (a message may pad its rows), then the copies of \a copies. */
+void
+appendCopies (pcl::PCLPointCloud2& cloud, const std::vector<pcl_wrap::PointIndex>& copies)
+{
+  const std::size_t step = cloud.point_step, n = std::size_t (cloud.width) * cloud.height;
+  if (copies.empty ())
+    return;
+  if (cloud.row_step != cloud.width * step)
+  {
+    std::vector<std::uint8_t> packed (n * step);
+    for (std::size_t row = 0; row < cloud.height; ++row)
+      std::copy_n (cloud.data.begin () + row * cloud.row_step, cloud.width * step,
+                   packed.begin () + row * cloud.width * step);
+    cloud.data = std::move (packed);
+  }
+  cloud.data.resize ((n + copies.size ()) * step);
+  for (std::size_t k = 0; k < copies.size (); ++k)
+    std::copy_n (cloud.data.begin () + copies[k] * step, step, cloud.data.begin () + (n + k) * step);
+  cloud.width = static_cast<std::uint32_t> (n + copies.size ());
+  cloud.height = 1;
+  cloud.row_step = static_cast<std::uint32_t> (cloud.width * step);
+}
+
 visualization_msgs::Marker
-triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pcl::Vertices>& polygons)
+triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pcl::Vertices>& polygons,
+              const std::vector<std::array<float, 4>>& colours)
 {
   visualization_msgs::Marker m;
   m.ns = "pcl_wrap";
@@ -103,7 +204,7 @@ triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pc
   m.action = visualization_msgs::Marker::ADD;
   m.pose.orientation.w = 1.0;
   m.scale.x = m.scale.y = m.scale.z = 1.0;
-  m.color.r = 0.8f, m.color.g = 0.7f, m.color.b = 0.5f, m.color.a = 1.0f;
+  m.color.r = 0.8f, m.color.g = 0.7f, m.color.b = 0.5f, m.color.a = 1.0f; // without colours of its own
   m.points.reserve (3 * polygons.size ());
   for (const auto& polygon : polygons)
     for (const auto v : polygon.vertices)
@@ -111,7 +212,15 @@ triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pc
       geometry_msgs::Point q;
       q.x = points[v].x, q.y = points[v].y, q.z = points[v].z;
       m.points.push_back (q);
+      if (v < colours.size ())
+      {
+        std_msgs::ColorRGBA c;
+        c.r = colours[v][0], c.g = colours[v][1], c.b = colours[v][2], c.a = colours[v][3];
+        m.colors.push_back (c);
+      }
     }
+  if (m.colors.size () != m.points.size ())
+    m.colors.clear ();
   return m;
 }
 
@@ -143,9 +252,13 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   pcl::PolygonMesh mesh;
   wrap.reconstruct (mesh);
   const auto& stats = wrap.getStatistics ();
-  ROS_DEBUG_STREAM ("pcl_wrap: " << stats.points_used << " points, " << mesh.polygons.size () << " triangles in "
-                                 << stats.total_seconds << " s");
+  ROS_INFO_STREAM ("pcl_wrap: " << msg->width * msg->height << " points (" << stats.points_used << " used) -> "
+                                << mesh.polygons.size () << " triangles in " << stats.total_seconds << " s");
 
+  // The mesh's vertices are the input's points with every field they have, then the copies.
+  const std::vector<pcl_wrap::PointIndex>& copies = wrap.getResult ().copies;
+  mesh.cloud = input;
+  appendCopies (mesh.cloud, copies);
   // moveFromPCL would drop the polygons; fromPCL copies them.
   pcl_msgs::PolygonMesh out;
   pcl_conversions::fromPCL (mesh, out);
@@ -153,9 +266,13 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   out.cloud.header = msg->header;
   mesh_publisher_.publish (out);
 
-  pcl::PointCloud<pcl::PointXYZ> points;
-  pcl::fromPCLPointCloud2 (mesh.cloud, points);
-  visualization_msgs::Marker marker = triangleList (points, mesh.polygons);
+  for (const pcl_wrap::PointIndex c : copies)
+    cloud->push_back ((*cloud)[c]);
+  std::vector<std::array<float, 4>> colours = coloursOf (input);
+  for (const pcl_wrap::PointIndex c : copies)
+    if (c < colours.size ())
+      colours.push_back (colours[c]);
+  visualization_msgs::Marker marker = triangleList (*cloud, mesh.polygons, colours);
   marker.header = msg->header;
   marker_publisher_.publish (marker);
 }

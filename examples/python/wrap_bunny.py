@@ -23,9 +23,10 @@ points = np.asarray(cloud.points)
 if len(points) == 0:
     sys.exit("wrap_bunny.py: no points in %s" % source)
 
-result = pcl_wrap.wrap(points)  # the default: a closed, oriented 2-manifold through the points
-mesh = pcl_wrap.to_open3d(result)
-mesh.compute_vertex_normals()
+result = pcl_wrap.wrap(cloud)  # the default: a closed, oriented 2-manifold through the points
+mesh = pcl_wrap.to_open3d(result)  # with the cloud's colours and normals, if it had them
+if not mesh.has_vertex_normals():
+    mesh.compute_vertex_normals()
 
 os.makedirs(os.path.dirname(os.path.abspath(target)), exist_ok=True)
 if not o3d.io.write_triangle_mesh(target, mesh):
@@ -33,4 +34,4 @@ if not o3d.io.write_triangle_mesh(target, mesh):
 s = result.statistics
 closed = mesh.is_edge_manifold(allow_boundary_edges=False) and mesh.is_vertex_manifold()
 print("%s: %d points -> %d triangles, closed manifold: %s, %.2f s; wrote %s"
-      % (source, len(points), len(result.triangles), closed, s["total_seconds"], target))
+      % (source, len(points), len(result.triangles), closed, s["timings"]["total"], target))

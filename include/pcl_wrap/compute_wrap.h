@@ -18,6 +18,10 @@ using Point3 = std::array<double, 3>;
 /** \brief Called after each stage with its name and duration, e.g. to show progress. */
 using StageObserver = std::function<void (const std::string& stage, double seconds)>;
 
+/** \brief Called while a long stage runs (the triangulation of large inputs) with the share of
+  * it done, from 0 to 1, e.g. to show a progress bar. */
+using ProgressObserver = std::function<void (const std::string& stage, double done)>;
+
 /** \brief Throws std::invalid_argument, saying why, when computeWrap() would reject
   * \a parameters: a NaN or non-positive threshold, a non-finite weight scale, a malformed region,
   * or a region without front deletion and a size threshold. Lets an application check what a
@@ -34,7 +38,9 @@ checkParameters (const WrapParameters& parameters);
   *            WrapParameters::weight_scale; points whose power cell is empty are hidden: reported,
   *            never part of the output
   * \param[in] parameters see WrapParameters
-  * \param[in] observer optional, called after every stage
+  * \param[in] observer optional, called after every stage; an exception it throws (e.g. to
+  *            cancel) ends the computation and reaches the caller
+  * \param[in] progress optional, called within long stages
   * \return the surface (by default the default surface, a closed oriented 2-manifold through the
   *         points; see WrapParameters::output), the complex when asked and statistics, with
   *         indices into \a points
@@ -43,8 +49,8 @@ checkParameters (const WrapParameters& parameters);
   */
 WrapResult
 computeWrap (const std::vector<Point3>& points, const std::vector<double>& weights,
-             const WrapParameters& parameters = WrapParameters (),
-             const StageObserver& observer = StageObserver ());
+             const WrapParameters& parameters = WrapParameters (), const StageObserver& observer = StageObserver (),
+             const ProgressObserver& progress = ProgressObserver ());
 
 /** \brief computeWrap() with every weight 0. */
 WrapResult

@@ -130,7 +130,7 @@ private:
   /** Runs the construction on input_ / indices_ and fills result_ with cloud indices. */
   void computeResult ();
   /** The weights of the points at \a indices: from weights_, the weight field, or none.
-    * \throws std::invalid_argument on a size mismatch, a missing field or a non-finite weight */
+    * \throws std::invalid_argument on a size mismatch or a missing field */
   std::vector<double> gatherWeights (const pcl::Indices& indices) const;
   /** computeResult(), or, if the engine fails, a PCL_ERROR and an empty result. */
   bool computeResultOrReport ();

@@ -114,8 +114,9 @@ struct WrapStatistics
   std::size_t collapses = 0;        ///< collapses performed by the retraction
   std::size_t perturbations = 0;    ///< predicate ties decided by the symbolic perturbation
 
-  /** \brief Sink deletion (when asked for): the median nearest-neighbour distance, the
-    * threshold used (a squared radius), the largest sink sizes, and what was deleted. */
+  /** \brief The median nearest-neighbour distance of the points used (0 below two points),
+    * always. Sink deletion (when asked for): the threshold used (a squared radius), the largest
+    * sink sizes, and what was deleted. */
   double spacing = 0.0;
   double delta = std::numeric_limits<double>::infinity ();
   std::vector<double> largest_sinks;

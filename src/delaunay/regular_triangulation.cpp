@@ -58,6 +58,9 @@ using Delaunay = CGAL::Delaunay_triangulation_3<
 
 // Below this many points the threads would mostly wait on each other's locks.
 constexpr std::size_t PARALLEL_INSERTION_MIN_POINTS = 20000;
+// From this many points an observed insertion reports its progress, in this many rounds.
+constexpr std::size_t PROGRESS_MIN_POINTS = 100000;
+constexpr std::uint32_t PROGRESS_ROUNDS = 20;
 // Lock grid cells per axis (CGAL's examples use 50; more cells, fewer conflicts).
 constexpr int LOCK_GRID_CELLS = 50;
 
@@ -189,7 +192,7 @@ spanSpace (std::size_t n, const Point& point)
   * indices. */
 template <class Cgal, class Site>
 Triangulation
-triangulateWith (const std::vector<Point3>& positions, const Site& site)
+triangulateWith (const std::vector<Point3>& positions, const Site& site, const std::function<void (double)>& progress)
 {
   std::vector<std::pair<typename Cgal::Point, std::uint32_t>> input;
   input.reserve (positions.size ());
@@ -206,7 +209,26 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
     locks.emplace (box, LOCK_GRID_CELLS);
     rt.set_lock_data_structure (&*locks);
   }
-  rt.insert (input.begin (), input.end ()); // spatially sorted insertion
+  if (!progress || input.size () < PROGRESS_MIN_POINTS)
+    rt.insert (input.begin (), input.end ()); // spatially sorted insertion
+  else
+  {
+    // Rounds of random samples (by a hash of the index, so the same every run), each inserted
+    // in spatial order: each round finds a coarser triangulation of the same points in place.
+    const auto round = [] (const auto& site_and_index) {
+      return std::uint32_t ((site_and_index.second * 2654435761u) >> 7) % PROGRESS_ROUNDS;
+    };
+    std::stable_sort (input.begin (), input.end (),
+                      [&] (const auto& a, const auto& b) { return round (a) < round (b); });
+    auto begin = input.begin ();
+    for (std::uint32_t r = 0; r < PROGRESS_ROUNDS; ++r)
+    {
+      const auto end = std::find_if (begin, input.end (), [&] (const auto& p) { return round (p) > r; });
+      rt.insert (begin, end);
+      begin = end;
+      progress (double (r + 1) / PROGRESS_ROUNDS);
+    }
+  }
   input = {};
   rt.set_lock_data_structure (nullptr);
 
@@ -280,7 +302,8 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site)
 } // namespace
 
 Triangulation
-triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights)
+triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights,
+             const std::function<void (double)>& progress)
 {
   const auto point = [&] (std::uint32_t i) {
     return BarePoint (positions[i][0], positions[i][1], positions[i][2]);
@@ -290,10 +313,10 @@ triangulate (const std::vector<Point3>& positions, const std::vector<double>& we
   const bool delaunay = equal_weights && spanSpace (positions.size (), point);
   const bool parallel = positions.size () >= PARALLEL_INSERTION_MIN_POINTS &&
                         tbb::this_task_arena::max_concurrency () > 1;
-  Triangulation t = delaunay ? parallel ? triangulateWith<Delaunay<CGAL::Parallel_tag>> (positions, point)
-                                        : triangulateWith<Delaunay<CGAL::Sequential_tag>> (positions, point)
-                  : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted)
-                             : triangulateWith<Regular<CGAL::Sequential_tag>> (positions, weighted);
+  Triangulation t = delaunay   ? parallel ? triangulateWith<Delaunay<CGAL::Parallel_tag>> (positions, point, progress)
+                                          : triangulateWith<Delaunay<CGAL::Sequential_tag>> (positions, point, progress)
+                      : parallel ? triangulateWith<Regular<CGAL::Parallel_tag>> (positions, weighted, progress)
+                               : triangulateWith<Regular<CGAL::Sequential_tag>> (positions, weighted, progress);
   return t;
 }
 

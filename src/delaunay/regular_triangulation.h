@@ -7,6 +7,7 @@
 #include <pcl_wrap/compute_wrap.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -32,8 +33,11 @@ struct Triangulation
 
 constexpr std::uint32_t NO_NEIGHBOUR = ~std::uint32_t (0);
 
-/** \brief Triangulates distinct, finite weighted points. */
+/** \brief Triangulates distinct, finite weighted points. With \a progress, a large input is
+  * inserted in rounds, each a random sample of the points (the triangulation is the same), and
+  * \a progress is told the share inserted after each. */
 Triangulation
-triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights);
+triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights,
+             const std::function<void (double)>& progress = {});
 
 } // namespace pcl_wrap::detail

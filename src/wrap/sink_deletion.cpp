@@ -26,9 +26,8 @@ deleteSinks (const SimplicialComplex& complex, const Classification& classificat
              const std::vector<Point3>& positions, const std::vector<double>& weights,
              const WrapParameters& parameters, const WrapFiltration* ordered, Subcomplex& y, WrapStatistics& stats)
 {
-  stats.spacing = complex.size (1) == 0
-                      ? 0.0
-                      : medianNearestNeighbourDistance (complex.vertices (1, 0), complex.size (1), 1, positions);
+  if (stats.spacing == 0.0 && complex.size (1) != 0) // the engine has measured it already
+    stats.spacing = medianNearestNeighbourDistance (complex.vertices (1, 0), complex.size (1), 1, positions);
   const Threshold& threshold = parameters.threshold;
   using Kind = Threshold::Kind;
   stats.delta = threshold.kind () == Kind::relative_radius ? std::pow (threshold.value () * stats.spacing, 2)

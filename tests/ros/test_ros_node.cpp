@@ -2,13 +2,15 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // The ROS node against a real ROS master (started by run_ros_test.sh): a real cloud in, the mesh
-// and the marker out, compared with the library on the same cloud. Two nodes run: /basic with
-// the defaults (started through the launch file) and /tight with ~radius_rel 2 and ~manifold.
+// and the marker out, compared with the library on the same cloud. Three nodes run: /basic with
+// the defaults (started through the launch file), /launched with the launch file's arguments
+// output:=raw radius_rel:=2 manifold:=true, and the nodelet /tight with these as parameters.
 #include "point_file.h"
 
 #include <pcl_wrap/wrap.h>
 
 #include <pcl/PolygonMesh.h>
+#include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 #include <pcl_conversions/pcl_conversions.h>
@@ -19,7 +21,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -31,20 +35,28 @@ std::string data_file;
 /** Publishes \a cloud on NS/cloud and waits for NS/mesh and NS/marker. */
 struct Exchange
 {
+  ros::Time stamp; ///< the cloud's: the outputs are latched, so older ones come first
   pcl_msgs::PolygonMesh::ConstPtr mesh;
   visualization_msgs::Marker::ConstPtr marker;
 };
 
+template <class Point>
 Exchange
-exchange (const std::string& ns, const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& frame)
+exchange (const std::string& ns, const pcl::PointCloud<Point>& cloud, const std::string& frame)
 {
   ros::NodeHandle nh (ns);
+  static std::uint32_t exchanges = 0;
   Exchange got;
+  got.stamp = ros::Time (1234, 5678 + exchanges++);
   auto mesh_sub = nh.subscribe<pcl_msgs::PolygonMesh> ("mesh", 1, [&] (const pcl_msgs::PolygonMesh::ConstPtr& m) {
-    got.mesh = m;
+    if (m->header.stamp == got.stamp)
+      got.mesh = m;
   });
-  auto marker_sub = nh.subscribe<visualization_msgs::Marker> (
-      "marker", 1, [&] (const visualization_msgs::Marker::ConstPtr& m) { got.marker = m; });
+  auto marker_sub =
+      nh.subscribe<visualization_msgs::Marker> ("marker", 1, [&] (const visualization_msgs::Marker::ConstPtr& m) {
+        if (m->header.stamp == got.stamp)
+          got.marker = m;
+      });
   auto publisher = nh.advertise<sensor_msgs::PointCloud2> ("cloud", 1);
   const ros::WallTime deadline = ros::WallTime::now () + ros::WallDuration (120.0);
   while ((publisher.getNumSubscribers () == 0 || mesh_sub.getNumPublishers () == 0 ||
@@ -57,7 +69,7 @@ exchange (const std::string& ns, const pcl::PointCloud<pcl::PointXYZ>& cloud, co
   sensor_msgs::PointCloud2 msg;
   pcl::toROSMsg (cloud, msg);
   msg.header.frame_id = frame;
-  msg.header.stamp = ros::Time (1234, 5678);
+  msg.header.stamp = got.stamp;
   msg.header.seq = 7;
   publisher.publish (msg);
   while ((!got.mesh || !got.marker) && ros::WallTime::now () < deadline)
@@ -90,7 +102,7 @@ expectSameAsLibrary (const Exchange& got, const pcl::PointCloud<pcl::PointXYZ>::
   ASSERT_FALSE (expected.polygons.empty ());
   EXPECT_EQ (got.mesh->polygons.size (), expected.polygons.size ());
   EXPECT_EQ (got.mesh->header.frame_id, frame);
-  EXPECT_EQ (got.mesh->header.stamp, ros::Time (1234, 5678));
+  EXPECT_EQ (got.mesh->header.stamp, got.stamp);
   EXPECT_EQ (got.mesh->cloud.header.frame_id, frame);
   EXPECT_EQ (got.marker->header.frame_id, frame);
   EXPECT_EQ (got.marker->type, visualization_msgs::Marker::TRIANGLE_LIST);
@@ -184,16 +196,74 @@ TEST (RosNode, OrganisedCloudWithNans)
   EXPECT_EQ (libraryMesh (cloud, raw).cloud.height, cloud->height) << "the raw W keeps an organised cloud organised";
 }
 
-TEST (RosNode, ParametersReachTheNode)
+TEST (RosNode, ParametersReachTheNodeAndTheNodelet)
 {
   const auto cloud = bunny ();
-  const Exchange got = exchange ("tight", *cloud, "bunny_frame");
-  expectSameAsLibrary (got, cloud, tightParameters (), "bunny_frame");
   pcl_wrap::WrapParameters raw;
   raw.output = pcl_wrap::Output::raw;
   const pcl::PolygonMesh basic = libraryMesh (cloud, raw);
-  ASSERT_TRUE (got.mesh);
-  EXPECT_NE (got.mesh->polygons.size (), basic.polygons.size ()) << "~radius_rel should change the surface";
+  for (const std::string ns : {"tight", "launched"})
+  {
+    SCOPED_TRACE (ns);
+    const Exchange got = exchange (ns, *cloud, "bunny_frame");
+    expectSameAsLibrary (got, cloud, tightParameters (), "bunny_frame");
+    ASSERT_TRUE (got.mesh);
+    EXPECT_NE (got.mesh->polygons.size (), basic.polygons.size ()) << "~radius_rel should change the surface";
+  }
+}
+
+TEST (RosNode, TheMeshKeepsEveryFieldAndTheMarkerTheColours)
+{
+  pcl::PointCloud<pcl::PointXYZRGBNormal> cloud;
+  const auto source = bunny ();
+  for (const auto& p : *source)
+  {
+    pcl::PointXYZRGBNormal q;
+    q.x = p.x, q.y = p.y, q.z = p.z;
+    q.r = std::uint8_t (std::lround (255 * std::clamp ((p.y + 0.1f) * 5.f, 0.f, 1.f))), q.g = 40, q.b = 200;
+    q.normal_x = 0, q.normal_y = 0, q.normal_z = 1, q.curvature = p.x;
+    cloud.push_back (q);
+  }
+  const Exchange got = exchange ("basic", cloud, "coloured");
+  ASSERT_TRUE (got.mesh && got.marker);
+  pcl::PointCloud<pcl::PointXYZRGBNormal> back;
+  pcl::PolygonMesh mesh;
+  pcl_conversions::toPCL (*got.mesh, mesh);
+  for (const char* field : {"rgb", "normal_x", "normal_y", "normal_z", "curvature"})
+    EXPECT_NE (pcl::getFieldIndex (mesh.cloud, field), -1) << field;
+  pcl::fromPCLPointCloud2 (mesh.cloud, back);
+  ASSERT_GE (back.size (), cloud.size ()); // then the copies, if any
+  for (std::size_t i = 0; i < cloud.size (); ++i)
+    ASSERT_TRUE (back[i].rgba == cloud[i].rgba && back[i].curvature == cloud[i].curvature) << i;
+  ASSERT_FALSE (mesh.polygons.empty ());
+  ASSERT_EQ (got.marker->colors.size (), got.marker->points.size ());
+  for (std::size_t k = 0; k < got.marker->colors.size (); ++k)
+  {
+    const auto& p = cloud[mesh.polygons[k / 3].vertices[k % 3]];
+    ASSERT_NEAR (got.marker->colors[k].r, p.r / 255.0, 1e-6);
+    ASSERT_NEAR (got.marker->colors[k].b, p.b / 255.0, 1e-6);
+  }
+}
+
+TEST (RosNode, TheOutputsAreLatched)
+{
+  const auto cloud = bunny ();
+  ASSERT_TRUE (exchange ("basic", *cloud, "first").mesh);
+  // A subscriber that comes later (RViz opened afterwards) still gets the last mesh and marker.
+  ros::NodeHandle nh ("basic");
+  pcl_msgs::PolygonMesh::ConstPtr mesh;
+  visualization_msgs::Marker::ConstPtr marker;
+  auto mesh_sub = nh.subscribe<pcl_msgs::PolygonMesh> ("mesh", 1, [&] (const auto& m) { mesh = m; });
+  auto marker_sub = nh.subscribe<visualization_msgs::Marker> ("marker", 1, [&] (const auto& m) { marker = m; });
+  const ros::WallTime deadline = ros::WallTime::now () + ros::WallDuration (30.0);
+  while ((!mesh || !marker) && ros::WallTime::now () < deadline)
+  {
+    ros::spinOnce ();
+    ros::WallDuration (0.01).sleep ();
+  }
+  ASSERT_TRUE (mesh && marker);
+  EXPECT_EQ (mesh->header.frame_id, "first");
+  EXPECT_EQ (marker->header.frame_id, "first");
 }
 
 TEST (RosNode, EveryTopicAdvertisedOnceWithItsType)

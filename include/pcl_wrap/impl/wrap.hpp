@@ -41,13 +41,7 @@ Wrap<PointInT>::gatherWeights (const pcl::Indices& indices) const
     for (const auto i : indices)
       weights.push_back (readPointField (reinterpret_cast<const std::uint8_t*> (&(*input_)[i]), *field));
   }
-  for (std::size_t k = 0; k < weights.size (); ++k)
-  {
-    const PointInT& p = (*input_)[indices[k]];
-    if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z) && !std::isfinite (weights[k]))
-      throw std::invalid_argument ("the weight of point " + std::to_string (indices[k]) + " is not finite");
-  }
-  return weights;
+  return weights; // a non-finite weight skips its point, as a non-finite coordinate does
 }
 
 template <typename PointInT> void

@@ -1,0 +1,76 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Copyright (C) 2026 the pcl_wrap authors
+"""Types of pcl_wrap's compiled engine (python/wrap_module.cpp)."""
+
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+
+__version__: str
+
+class Threshold:
+    def __init__(self) -> None: ...
+    @staticmethod
+    def size(delta: float) -> Threshold: ...
+    @staticmethod
+    def radius(radius: float) -> Threshold: ...
+    @staticmethod
+    def relative_radius(factor: float) -> Threshold: ...
+    @staticmethod
+    def largest(count: int) -> Threshold: ...
+    @property
+    def kind(self) -> str: ...
+    @property
+    def value(self) -> float: ...
+    @property
+    def count(self) -> int: ...
+
+class Region:
+    def __init__(self) -> None: ...
+    @staticmethod
+    def sphere(x: float, y: float, z: float, r: float) -> Region: ...
+    @staticmethod
+    def box(x0: float, y0: float, z0: float, x1: float, y1: float, z1: float) -> Region: ...
+    @property
+    def shape(self) -> str: ...
+    @property
+    def values(self) -> List[float]: ...
+
+class Filtration:
+    @property
+    def sink_sizes(self) -> np.ndarray: ...
+    def x_size(self, delta: float) -> List[int]: ...
+    def surface(self, delta: float) -> Dict[str, np.ndarray]: ...
+
+class SinkDeletion:
+    front: SinkDeletion
+    global_: SinkDeletion
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class Output:
+    surface: Output
+    closed: Output
+    raw: Output
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+
+class WrapParameters:
+    keep_complex: bool
+    num_threads: int
+    weight_scale: float
+    threshold: Threshold
+    deletion: SinkDeletion
+    region: Region
+    output: Output
+    viewpoint: Optional[Tuple[float, float, float]]
+    manifold: bool
+    filtration: bool
+    def __init__(self) -> None: ...
+
+def compute(points: np.ndarray, weights: Optional[np.ndarray], parameters: WrapParameters) -> Dict[str, Any]: ...
+def median_spacing(points: np.ndarray) -> float: ...
