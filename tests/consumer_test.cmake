@@ -73,6 +73,27 @@ if(NOT STATIC)
   string(APPEND pcd "0 0 0 16711680\n1 0 0 65280\n0 1 0 255\n0 0 1 16711935\n1 1 1 65535\n0.3 0.3 0.3 8421504\n")
   file(WRITE ${WORK_DIR}/coloured.pcd "${pcd}")
   run(${WORK_DIR}/build-readme/my_pipeline ${WORK_DIR}/coloured.pcd ${WORK_DIR}/coloured.ply)
+  # The README's first C++ snippet, a function, called on a regular tetrahedron: its four faces.
+  file(WRITE ${WORK_DIR}/readme-cloud/CMakeLists.txt
+       "cmake_minimum_required(VERSION 3.16)\nproject(readme_cloud LANGUAGES C CXX)\n"
+       "find_package(pcl_wrap REQUIRED)\nadd_executable(readme_cloud main.cpp ${WORK_DIR}/readme/wrap_cloud.cpp)\n"
+       "target_link_libraries(readme_cloud PRIVATE pcl_wrap::pcl_wrap)\n")
+  file(WRITE ${WORK_DIR}/readme-cloud/main.cpp
+       "#include <pcl/PolygonMesh.h>\n#include <pcl/pcl_base.h>\n#include <pcl/point_types.h>\n"
+       "pcl::PolygonMesh wrapCloud (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr&, const pcl::IndicesConstPtr&);\n"
+       "int main () {\n  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();\n"
+       "  for (const auto& p : {pcl::PointXYZ (1, 1, 1), pcl::PointXYZ (1, -1, -1), pcl::PointXYZ (-1, 1, -1),\n"
+       "                        pcl::PointXYZ (-1, -1, 1)}) cloud->push_back (p);\n"
+       "  auto all = pcl::make_shared<pcl::Indices> (pcl::Indices {0, 1, 2, 3});\n"
+       "  return wrapCloud (cloud, all).polygons.size () == 4 ? 0 : 1;\n}\n")
+  run(${CMAKE_COMMAND} -S ${WORK_DIR}/readme-cloud -B ${WORK_DIR}/build-readme-cloud
+      -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release)
+  run(${CMAKE_COMMAND} --build ${WORK_DIR}/build-readme-cloud -j2)
+  run(${WORK_DIR}/build-readme-cloud/readme_cloud)
+  if(PYTHON) # the README's Python example, with the installed package
+    run(${CMAKE_COMMAND} -E env --unset=LD_LIBRARY_PATH PYTHONPATH=${WORK_DIR}/prefix/lib/python3/dist-packages
+        PYTHONDONTWRITEBYTECODE=1 ${PYTHON} ${WORK_DIR}/readme/readme_example.py)
+  endif()
   file(READ ${WORK_DIR}/coloured.ply header LIMIT 400)
   if(NOT header MATCHES "property uchar red" AND NOT header MATCHES "property float rgb")
     message(FATAL_ERROR "the README pipeline's PLY has no colours:\n${header}")
