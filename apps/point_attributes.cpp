@@ -7,8 +7,6 @@
 #include <pcl/common/io.h>
 
 #include <algorithm>
-#include <cstring>
-#include <stdexcept>
 
 namespace pcl_wrap::apps
 {
@@ -57,17 +55,6 @@ PointAttributes::describe () const
 PointAttributes
 attributesOf (const pcl::PCLPointCloud2& cloud)
 {
-  const std::size_t n = std::size_t (cloud.width) * cloud.height;
-  if (n * cloud.point_step > cloud.data.size ())
-    throw std::invalid_argument ("point data shorter than its header says");
-  const auto checked = [&] (const pcl::PCLPointField& f, std::uint32_t element) {
-    const std::size_t size = pcl::getFieldSize (f.datatype);
-    if (size == 0 || f.offset + (element + 1) * size > cloud.point_step)
-      throw std::invalid_argument ("field " + f.name + " beyond the point size");
-    pcl::PCLPointField one = f;
-    one.offset = static_cast<std::uint32_t> (f.offset + element * size);
-    return one;
-  };
   const auto find = [&] (const std::string& name) -> const pcl::PCLPointField* {
     for (const pcl::PCLPointField& f : cloud.fields)
       if (f.name == name)
@@ -75,50 +62,38 @@ attributesOf (const pcl::PCLPointCloud2& cloud)
     return nullptr;
   };
   PointAttributes out;
+  const PointColours colours = readColours (cloud);
+  out.colours = colours.rgba;
+  out.alpha = colours.alpha;
   const pcl::PCLPointField* normal[3] = {find ("normal_x"), find ("normal_y"), find ("normal_z")};
   const bool has_normals = normal[0] && normal[1] && normal[2];
   if (has_normals)
-  {
-    out.normals.resize (n);
     for (int k = 0; k < 3; ++k)
     {
-      const pcl::PCLPointField f = checked (*normal[k], 0);
-      for (std::size_t i = 0; i < n; ++i)
-        out.normals[i][k] = static_cast<float> (readPointField (&cloud.data[i * cloud.point_step], f));
+      const std::vector<double> values = readFieldValues (cloud, *normal[k]);
+      out.normals.resize (values.size ());
+      for (std::size_t i = 0; i < values.size (); ++i)
+        out.normals[i][k] = static_cast<float> (values[i]);
     }
-  }
+  bool colour_field_taken = false;
   for (const pcl::PCLPointField& field : cloud.fields)
   {
     const std::string& name = field.name;
     if (name == "x" || name == "y" || name == "z" || name == "_" || name.empty () ||
         (has_normals && name.rfind ("normal_", 0) == 0 && name.size () == 8))
       continue;
-    if ((name == "rgb" || name == "rgba") && out.colours.empty () && pcl::getFieldSize (field.datatype) == 4)
+    // The field readColours() took; a second colour field is kept as numbers.
+    if ((name == "rgb" || name == "rgba") && !colour_field_taken && pcl::getFieldSize (field.datatype) == 4)
     {
-      const pcl::PCLPointField f = checked (field, 0);
-      out.alpha = name == "rgba";
-      out.colours.resize (n);
-      for (std::size_t i = 0; i < n; ++i)
-      {
-        std::uint32_t packed; // 0xAARRGGBB, whether the field is a float or an integer
-        std::memcpy (&packed, &cloud.data[i * cloud.point_step + f.offset], 4);
-        out.colours[i] = {std::uint8_t (packed >> 16), std::uint8_t (packed >> 8), std::uint8_t (packed),
-                          out.alpha ? std::uint8_t (packed >> 24) : std::uint8_t (255)};
-      }
+      colour_field_taken = true;
       continue;
     }
     if (field.datatype < pcl::PCLPointField::INT8 || field.datatype > pcl::PCLPointField::FLOAT64)
       continue; // not a number: nothing a mesh vertex could carry
     const std::uint32_t count = std::max<std::uint32_t> (field.count, 1);
     for (std::uint32_t element = 0; element < count; ++element)
-    {
-      const pcl::PCLPointField f = checked (field, element);
-      ScalarField& scalar = out.scalars.emplace_back (
-          ScalarField{count == 1 ? name : name + "_" + std::to_string (element), field.datatype, {}});
-      scalar.values.resize (n);
-      for (std::size_t i = 0; i < n; ++i)
-        scalar.values[i] = readPointField (&cloud.data[i * cloud.point_step], f);
-    }
+      out.scalars.push_back ({count == 1 ? name : name + "_" + std::to_string (element), field.datatype,
+                              readFieldValues (cloud, field, element)});
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_publisher.h"
 
+#include <pcl_wrap/cloud_copies.h>
 #include <pcl_wrap/point_field.h>
 #include <pcl_wrap/wrap.h>
 
@@ -17,7 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -111,8 +112,6 @@ readParameters (const ros::NodeHandle& private_nh)
     throw std::invalid_argument ("~threads must be a whole number from 0 (all cores) to 4096");
   p.num_threads = static_cast<unsigned> (threads);
   get (private_nh, "weight_scale", p.weight_scale, "a number");
-  std::string field;
-  get (private_nh, "weight_field", field, "a field name");
   p.keep_complex = false;        // the node publishes the surface only
   pcl_wrap::checkParameters (p); // what depends on several: a region needs a size threshold, ...
   return p;
@@ -131,9 +130,17 @@ unknownParameters (const ros::NodeHandle& private_nh)
   return unknown;
 }
 
+std::string
+readWeightField (const ros::NodeHandle& private_nh)
+{
+  std::string field;
+  get (private_nh, "weight_field", field, "a field name");
+  return field;
+}
+
 WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private_nh)
   : parameters_ (readParameters (private_nh)),
-    weight_field_ (private_nh.param<std::string> ("weight_field", "")),
+    weight_field_ (readWeightField (private_nh)),
     mesh_publisher_ (nh.advertise<pcl_msgs::PolygonMesh> ("mesh", 1, true)) // latched: RViz opened later sees it
     ,
     marker_publisher_ (nh.advertise<visualization_msgs::Marker> ("marker", 1, true)),
@@ -148,54 +155,9 @@ WrapPublisher::WrapPublisher (ros::NodeHandle nh, const ros::NodeHandle& private
 namespace
 {
 
-/** Each point's colour from an "rgb" or "rgba" field, or nothing when there is none. */
-std::vector<std::array<float, 4>>
-coloursOf (const pcl::PCLPointCloud2& cloud)
-{
-  std::vector<std::array<float, 4>> colours;
-  for (const pcl::PCLPointField& f : cloud.fields)
-    if ((f.name == "rgb" || f.name == "rgba") && pcl::getFieldSize (f.datatype) == 4 &&
-        f.offset + 4 <= cloud.point_step)
-    {
-      const std::size_t n = std::size_t (cloud.width) * cloud.height;
-      for (std::size_t i = 0; i < n && (i + 1) * cloud.point_step <= cloud.data.size (); ++i)
-      {
-        std::uint32_t packed; // 0xAARRGGBB
-        std::memcpy (&packed, &cloud.data[i * cloud.point_step + f.offset], 4);
-        colours.push_back ({float ((packed >> 16) & 255) / 255.f, float ((packed >> 8) & 255) / 255.f,
-                            float (packed & 255) / 255.f, f.name == "rgba" ? float (packed >> 24) / 255.f : 1.f});
-      }
-      break;
-    }
-  return colours;
-}
-
-/** The cloud's points in one block (a message may pad its rows), then the copies of \a copies. */
-void
-appendCopies (pcl::PCLPointCloud2& cloud, const std::vector<pcl_wrap::PointIndex>& copies)
-{
-  const std::size_t step = cloud.point_step, n = std::size_t (cloud.width) * cloud.height;
-  if (copies.empty ())
-    return;
-  if (cloud.row_step != cloud.width * step)
-  {
-    std::vector<std::uint8_t> packed (n * step);
-    for (std::size_t row = 0; row < cloud.height; ++row)
-      std::copy_n (cloud.data.begin () + row * cloud.row_step, cloud.width * step,
-                   packed.begin () + row * cloud.width * step);
-    cloud.data = std::move (packed);
-  }
-  cloud.data.resize ((n + copies.size ()) * step);
-  for (std::size_t k = 0; k < copies.size (); ++k)
-    std::copy_n (cloud.data.begin () + copies[k] * step, step, cloud.data.begin () + (n + k) * step);
-  cloud.width = static_cast<std::uint32_t> (n + copies.size ());
-  cloud.height = 1;
-  cloud.row_step = static_cast<std::uint32_t> (cloud.width * step);
-}
-
 visualization_msgs::Marker
 triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pcl::Vertices>& polygons,
-              const std::vector<std::array<float, 4>>& colours)
+              const std::vector<std::array<std::uint8_t, 4>>& colours)
 {
   visualization_msgs::Marker m;
   m.ns = "pcl_wrap";
@@ -215,7 +177,8 @@ triangleList (const pcl::PointCloud<pcl::PointXYZ>& points, const std::vector<pc
       if (v < colours.size ())
       {
         std_msgs::ColorRGBA c;
-        c.r = colours[v][0], c.g = colours[v][1], c.b = colours[v][2], c.a = colours[v][3];
+        c.r = colours[v][0] / 255.f, c.g = colours[v][1] / 255.f, c.b = colours[v][2] / 255.f,
+        c.a = colours[v][3] / 255.f;
         m.colors.push_back (c);
       }
     }
@@ -258,7 +221,7 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   // The mesh's vertices are the input's points with every field they have, then the copies.
   const std::vector<pcl_wrap::PointIndex>& copies = wrap.getResult ().copies;
   mesh.cloud = input;
-  appendCopies (mesh.cloud, copies);
+  pcl_wrap::appendCopies (mesh.cloud, copies);
   // moveFromPCL would drop the polygons; fromPCL copies them.
   pcl_msgs::PolygonMesh out;
   pcl_conversions::fromPCL (mesh, out);
@@ -268,10 +231,13 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
 
   for (const pcl_wrap::PointIndex c : copies)
     cloud->push_back ((*cloud)[c]);
-  std::vector<std::array<float, 4>> colours = coloursOf (input);
-  for (const pcl_wrap::PointIndex c : copies)
-    if (c < colours.size ())
-      colours.push_back (colours[c]);
+  std::vector<std::array<std::uint8_t, 4>> colours; // of the mesh's vertices, copies included
+  try
+  {
+    colours = pcl_wrap::readColours (mesh.cloud).rgba;
+  }
+  catch (const std::invalid_argument&) // a malformed colour field: the marker's own colour
+  {}
   visualization_msgs::Marker marker = triangleList (*cloud, mesh.polygons, colours);
   marker.header = msg->header;
   marker_publisher_.publish (marker);

@@ -21,6 +21,11 @@ namespace pcl_wrap_ros
 pcl_wrap::WrapParameters
 readParameters (const ros::NodeHandle& private_nh);
 
+/** \brief ~weight_field: the points' field holding the weights (empty: none).
+  * \throws std::invalid_argument when it is not a string */
+std::string
+readWeightField (const ros::NodeHandle& private_nh);
+
 /** \brief The parameters under \a private_nh that the node does not know (a typo, most likely). */
 std::vector<std::string>
 unknownParameters (const ros::NodeHandle& private_nh);

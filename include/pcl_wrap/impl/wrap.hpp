@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include <pcl_wrap/cloud_copies.h>
 #include <pcl_wrap/export.h>
 #include <pcl_wrap/point_field.h>
 #include <pcl_wrap/wrap.h>
@@ -128,17 +129,7 @@ Wrap<PointInT>::performReconstruction (pcl::PolygonMesh& output)
   if (!computeResultOrReport ())
     return;
   appendPolygons (output.polygons);
-  if (result_.copies.empty ())
-    return;
-  pcl::PCLPointCloud2& cloud = output.cloud;
-  const std::size_t step = cloud.point_step;
-  const std::size_t old_size = cloud.data.size ();
-  cloud.data.resize (old_size + result_.copies.size () * step);
-  for (std::size_t k = 0; k < result_.copies.size (); ++k)
-    std::copy_n (cloud.data.begin () + result_.copies[k] * step, step, cloud.data.begin () + old_size + k * step);
-  cloud.width = static_cast<std::uint32_t> (cloud.data.size () / step);
-  cloud.height = 1;
-  cloud.row_step = static_cast<std::uint32_t> (cloud.width * step);
+  appendCopies (output.cloud, result_.copies);
 }
 
 template <typename PointInT> void
