@@ -3,6 +3,7 @@
 #include "surface/solid_repair.h"
 
 #include "surface/link_cycle.h"
+#include "surface/solid_euler.h"
 #include "surface/solid_join.h"
 #include "surface/solid_voids.h"
 #include "util/parallel_for_each.h"
@@ -39,7 +40,8 @@ public:
       complex_ (tetrahedra.complex ()),
       labels_ (labels),
       flipped_ (tetrahedra.size (), 0),
-      unmended_ (complex_.numVertices (), 0)
+      unmended_ (complex_.numVertices (), 0),
+      euler_change_ (tetrahedra, labels.inside)
   {
     if (!keep_buried)
       return;
@@ -233,16 +235,23 @@ private:
     return parts;
   }
 
-  /** The weakest movable part whose side has more than one part (moving the only part of a side
-    * would take v off the surface); NONE if none. */
-  static std::uint32_t weakest (const Parts& parts)
+  /** The part to move: the weakest movable part whose side has more than one part (moving the only
+    * part of a side would take v off the surface), of those that make no handle if any (but in a
+    * volume, whose solid is X's); NONE if none. A handle here is one the points do not show: two
+    * sheets of the surface that touch get tied by a tube, where cutting them apart keeps the
+    * solid's topology. */
+  std::uint32_t partToMove (const StarScratch& s, const Parts& parts)
   {
-    std::uint32_t best = NONE;
+    std::vector<std::uint32_t> candidates;
     for (std::uint32_t p = 0; p < parts.side.size (); ++p)
-      if (parts.movable[p] && parts.count[parts.side[p]] > 1 &&
-          (best == NONE || parts.weight[p] < parts.weight[best]))
-        best = p;
-    return best;
+      if (parts.movable[p] && parts.count[parts.side[p]] > 1)
+        candidates.push_back (p);
+    std::stable_sort (candidates.begin (), candidates.end (),
+                      [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
+    for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
+      if (euler_change_ (members (s, parts, candidates[k])) >= 0)
+        return candidates[k];
+    return candidates.empty () ? NONE : candidates.front ();
   }
 
   static std::vector<std::uint32_t> members (const StarScratch& s, const Parts& parts, std::uint32_t p)
@@ -288,7 +297,7 @@ private:
 
   /** The tetrahedra to move at v (empty: nothing to mend, or nothing allowed); \a pinched: the
     * surface touches itself at v (a pinched edge, or more than one fan). */
-  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s, bool& pinched) const
+  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s, bool& pinched)
   {
     tetrahedra_.gatherStar (v, s.star);
     if (s.star.empty ())
@@ -299,7 +308,7 @@ private:
     {
       const Parts ring = split (s, [&] (int k) { return tetrahedra_.hasVertex (s.star[k], w); },
                                 [&] (std::uint32_t t, int i) { return tetrahedra_.vertex (t, i) != w; });
-      const std::uint32_t p = weakest (ring);
+      const std::uint32_t p = partToMove (s, ring);
       if (p != NONE)
         return members (s, ring, p);
     }
@@ -307,7 +316,7 @@ private:
     pinched = w != NONE || parts.count[0] + parts.count[1] > 2;
     if (parts.count[0] + parts.count[1] > 2)
     {
-      const std::uint32_t p = weakest (parts);
+      const std::uint32_t p = partToMove (s, parts);
       if (p != NONE)
         return members (s, parts, p);
       return {};
@@ -327,12 +336,19 @@ private:
         }
         return false;
       };
-      std::uint32_t best = NONE;
+      // The weakest that makes no handle, if any; in a volume, whose inside is X's, the weakest.
+      std::vector<std::uint32_t> candidates;
       for (std::uint32_t t : s.star.tetrahedra ())
-        if (!flipped_[t] && touches (t) && (best == NONE || labels_.margin[t] < labels_.margin[best]))
-          best = t;
-      if (best != NONE)
-        return {best};
+        if (!flipped_[t] && touches (t))
+          candidates.push_back (t);
+      std::sort (candidates.begin (), candidates.end (), [&] (std::uint32_t t, std::uint32_t u) {
+        return labels_.margin[t] != labels_.margin[u] ? labels_.margin[t] < labels_.margin[u] : t < u;
+      });
+      for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
+        if (euler_change_ ({candidates[k]}) >= 0)
+          return {candidates[k]};
+      if (!candidates.empty ())
+        return {candidates.front ()};
       if (stays_buried_.empty ()) // not a volume
         return {};
       std::array<std::uint32_t, 2> pair{NONE, NONE};
@@ -363,6 +379,7 @@ private:
   std::vector<std::uint8_t> flipped_;
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
   StarScratch scratch_; // the sequential mending's
+  SolidEulerChange euler_change_;
 };
 
 } // namespace

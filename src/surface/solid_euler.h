@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "delaunay/tetrahedra.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief How moving a few tetrahedra across the surface would change the Euler characteristic of
+  * the labelled solid, the union of its closed inside tetrahedra.
+  *
+  * With S the solid and P the moved tetrahedra, all on one side, and K the faces of P that are also
+  * faces of an inside tetrahedron not in P: moving P inside changes chi (S) by chi (P) - chi (K),
+  * moving it outside by chi (K) - chi (P). Zero leaves the solid's topology as it was; -1 makes a
+  * handle (or joins two parts), +1 cuts one (or splits a part off). Only the stars of P's faces are
+  * read, so the answer follows the labels as they change. */
+class SolidEulerChange
+{
+public:
+  SolidEulerChange (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
+    : tetrahedra_ (tetrahedra), inside_ (inside)
+  {}
+
+  /** \brief The change of chi (S) if the tetrahedra \a moved (all on one side, distinct) changed
+    * side. */
+  int operator() (const std::vector<std::uint32_t>& moved);
+
+private:
+  /** A face of a moved tetrahedron: dimension, id, where it was seen, and whether it is in K. */
+  struct Face
+  {
+    int dim;
+    std::uint32_t id;
+    std::uint32_t tetrahedron;
+    int a, b; // local vertices of the tetrahedron: the vertex (a), the edge (a, b)
+    bool in_k;
+    bool operator<(const Face& o) const { return dim != o.dim ? dim < o.dim : id < o.id; }
+  };
+
+  bool isMoved (std::uint32_t t) const;
+  /** Is some inside tetrahedron that is not moved a coface of \a face? */
+  bool onOtherInside (const Face& face);
+
+  const Tetrahedra& tetrahedra_;
+  const std::vector<std::uint8_t>& inside_;
+  std::vector<std::uint32_t> moved_; // sorted
+  std::vector<Face> faces_;
+  Star star_;
+};
+
+} // namespace pcl_wrap::detail
