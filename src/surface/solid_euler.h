@@ -16,8 +16,9 @@ namespace pcl_wrap::detail
   * With S the solid and P the moved tetrahedra, all on one side, and K the faces of P that are also
   * faces of an inside tetrahedron not in P: moving P inside changes chi (S) by chi (P) - chi (K),
   * moving it outside by chi (K) - chi (P). Zero leaves the solid's topology as it was; -1 makes a
-  * handle (or joins two parts), +1 cuts one (or splits a part off). Only the stars of P's faces are
-  * read, so the answer follows the labels as they change. */
+  * handle (or joins two parts), +1 cuts one (or splits a part off). Only P's faces are looked at:
+  * the tetrahedra around each edge, and a count of inside tetrahedra per vertex, kept up to date by
+  * changedSide(). */
 class SolidEulerChange
 {
 public:
@@ -29,6 +30,10 @@ public:
     * side. */
   int operator() (const std::vector<std::uint32_t>& moved);
 
+  /** \brief To be called after \a t changed side: keeps the count of inside tetrahedra at each
+    * vertex, which the first call of operator() makes, up to date. */
+  void changedSide (std::uint32_t t);
+
 private:
   /** A face of a moved tetrahedron: dimension, id, where it was seen, and whether it is in K. */
   struct Face
@@ -38,6 +43,7 @@ private:
     std::uint32_t tetrahedron;
     int a, b; // local vertices of the tetrahedron: the vertex (a), the edge (a, b)
     bool in_k;
+    std::uint32_t uses; // how many moved tetrahedra have it, once sorted
     bool operator<(const Face& o) const { return dim != o.dim ? dim < o.dim : id < o.id; }
   };
 
@@ -47,9 +53,9 @@ private:
 
   const Tetrahedra& tetrahedra_;
   const std::vector<std::uint8_t>& inside_;
-  std::vector<std::uint32_t> moved_; // sorted
+  std::vector<std::uint32_t> inside_at_vertex_; // per vertex; empty until first needed
+  std::vector<std::uint32_t> moved_;            // sorted
   std::vector<Face> faces_;
-  Star star_;
 };
 
 } // namespace pcl_wrap::detail

@@ -72,6 +72,8 @@ public:
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
     const std::vector<std::uint32_t> filled = fillUnsampledVoids (tetrahedra_, labels_, flipped_);
     joined.insert (joined.end (), filled.begin (), filled.end ());
+    for (std::uint32_t t : joined)
+      euler_change_.changedSide (t);
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : joined)
@@ -135,6 +137,7 @@ private:
       for (std::uint32_t t : flips)
       {
         labels_.inside[t] ^= 1u;
+        euler_change_.changedSide (t);
         flipped_[t] = 1;
         ++done.flipped;
         for (int i = 0; i < 4; ++i)
