@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// How a move changes the labelled solid's Euler characteristic (docs/surface.md §2), from the stars
+// How a move changes the labelled solid's Euler characteristic (docs/surface.md §2), from the faces
 // of the moved tetrahedra alone, against the characteristic counted face by face before and after.
 #include "surface/solid_euler.h"
 #include "surface/solid_labelling.h"

@@ -95,6 +95,15 @@ public:
     const std::uint32_t* a = vertices (t);
     return a[0] == v || a[1] == v || a[2] == v || a[3] == v;
   }
+  /** \brief Of \a t's two facets that hold the edge (v, w), the one that is not facet \a i: where
+    * a walk round the edge leaves t when it came in through facet i. */
+  int otherFacetRoundEdge (std::uint32_t t, int i, std::uint32_t v, std::uint32_t w) const
+  {
+    int out = 0;
+    while (out == i || vertex (t, out) == v || vertex (t, out) == w)
+      ++out;
+    return out;
+  }
   /** \brief The highest-numbered tetrahedron of \a v, or NO_TETRAHEDRON for a vertex of none. */
   std::uint32_t tetrahedronOf (std::uint32_t v) const { return tetrahedron_of_vertex_[v]; }
   /** \brief \a star := the tetrahedra that contain \a v, breadth first from tetrahedronOf (v)

@@ -24,32 +24,23 @@ SolidEulerChange::onOtherInside (const Face& face)
   const std::uint32_t start = face.tetrahedron;
   if (counts (start))
     return true;
-  int others[2], n = 0;
-  for (int i = 0; i < 4; ++i)
-    if (i != face.a && i != face.b)
-      others[n++] = i;
-  for (int way = 0; way < 2; ++way)
-  {
-    std::uint32_t t = start;
-    int cross = others[way];                                      // the facet crossed next, opposite
-    std::uint32_t kept = tetrahedra_.vertex (t, others[1 - way]); // the facet's third vertex
-    for (;;)
+  const std::uint32_t a = tetrahedra_.vertex (start, face.a), b = tetrahedra_.vertex (start, face.b);
+  int first = 0;
+  while (first == face.a || first == face.b)
+    ++first;
+  for (int leave : {first, tetrahedra_.otherFacetRoundEdge (start, first, a, b)})
+    for (std::uint32_t t = start;;)
     {
-      const std::uint32_t u = tetrahedra_.neighbour (t, cross);
+      const std::uint32_t u = tetrahedra_.neighbour (t, leave);
       if (u == OUTSIDE_HULL)
         break;
       if (u == start)
         return false;
       if (counts (u))
         return true;
-      const std::uint32_t fresh = tetrahedra_.vertex (u, tetrahedra_.mirrorIndex (t, cross));
-      cross = 0;
-      while (tetrahedra_.vertex (u, cross) != kept)
-        ++cross;
-      kept = fresh;
+      leave = tetrahedra_.otherFacetRoundEdge (u, tetrahedra_.mirrorIndex (t, leave), a, b);
       t = u;
     }
-  }
   return false;
 }
 

@@ -96,22 +96,13 @@ public:
 private:
   bool solid (std::uint32_t t) const { return t != OUTSIDE_HULL && inside_[t]; }
 
-  /** Of tetrahedron t's two facets that hold the edge (v, w), the one that is not facet i. */
-  int otherFacet (std::uint32_t t, int i, std::uint32_t v, std::uint32_t w) const
-  {
-    int out = 0;
-    while (out == i || complex_.vertex (3, t, out) == v || complex_.vertex (3, t, out) == w)
-      ++out;
-    return out;
-  }
-
   /** From the surface triangle \a f, around its edge (v, w) through solid tetrahedra to the
     * surface triangle that ends the run. */
   Face acrossTheSolid (Face f, std::uint32_t v, std::uint32_t w) const
   {
     for (Face at = f;;)
     {
-      const int out = otherFacet (at.t, at.i, v, w);
+      const int out = tetrahedra_.otherFacetRoundEdge (at.t, at.i, v, w);
       const std::uint32_t u = tetrahedra_.neighbour (at.t, out);
       if (!solid (u))
         return {at.t, out};
@@ -134,21 +125,21 @@ private:
         // The other way round the edge from f, through every tetrahedron, to the hull again;
         // from there back towards f, where the run goes on.
         t = f.t;
-        leave = otherFacet (f.t, f.i, v, w);
+        leave = tetrahedra_.otherFacetRoundEdge (f.t, f.i, v, w);
         for (std::uint32_t next; (next = tetrahedra_.neighbour (t, leave)) != OUTSIDE_HULL;)
         {
-          leave = otherFacet (next, tetrahedra_.mirrorIndex (t, leave), v, w);
+          leave = tetrahedra_.otherFacetRoundEdge (next, tetrahedra_.mirrorIndex (t, leave), v, w);
           t = next;
         }
         if (inside_[t])
           return {t, leave};
-        leave = otherFacet (t, leave, v, w);
+        leave = tetrahedra_.otherFacetRoundEdge (t, leave, v, w);
         continue;
       }
       const int back = tetrahedra_.mirrorIndex (t, leave);
       if (inside_[u])
         return {u, back};
-      leave = otherFacet (u, back, v, w);
+      leave = tetrahedra_.otherFacetRoundEdge (u, back, v, w);
       t = u;
     }
   }

@@ -251,10 +251,21 @@ private:
         candidates.push_back (p);
     std::stable_sort (candidates.begin (), candidates.end (),
                       [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
+    return firstMakingNoHandle (candidates, [&] (std::uint32_t p) { return members (s, parts, p); });
+  }
+
+  /** The first of \a candidates (weakest first) whose move, the tetrahedra \a moved gives, makes no
+    * handle; the first of all when each makes one, when there is no other choice, or in a volume
+    * (whose solid is X's); NONE if there is none. */
+  template <class Moved>
+  std::uint32_t firstMakingNoHandle (const std::vector<std::uint32_t>& candidates, const Moved& moved)
+  {
+    if (candidates.empty ())
+      return NONE;
     for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
-      if (euler_change_ (members (s, parts, candidates[k])) >= 0)
+      if (euler_change_ (moved (candidates[k])) >= 0)
         return candidates[k];
-    return candidates.empty () ? NONE : candidates.front ();
+    return candidates.front ();
   }
 
   static std::vector<std::uint32_t> members (const StarScratch& s, const Parts& parts, std::uint32_t p)
@@ -347,11 +358,10 @@ private:
       std::sort (candidates.begin (), candidates.end (), [&] (std::uint32_t t, std::uint32_t u) {
         return labels_.margin[t] != labels_.margin[u] ? labels_.margin[t] < labels_.margin[u] : t < u;
       });
-      for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
-        if (euler_change_ ({candidates[k]}) >= 0)
-          return {candidates[k]};
-      if (!candidates.empty ())
-        return {candidates.front ()};
+      const std::uint32_t best =
+          firstMakingNoHandle (candidates, [] (std::uint32_t t) { return std::vector<std::uint32_t>{t}; });
+      if (best != NONE)
+        return {best};
       if (stays_buried_.empty ()) // not a volume
         return {};
       std::array<std::uint32_t, 2> pair{NONE, NONE};
