@@ -270,40 +270,6 @@ parseOptions (int argc, char** argv)
   return o;
 }
 
-/** The output mesh: its vertices as input rows (the points not skipped, in input order, then the
-  * copies' sources) and its triangles over them. */
-struct OutputVertices
-{
-  std::vector<PointIndex> rows;
-  std::vector<std::array<PointIndex, 3>> triangles;
-};
-
-OutputVertices
-outputVertices (std::size_t num_points, const WrapResult& result)
-{
-  OutputVertices out;
-  std::vector<bool> skipped (num_points, false);
-  for (const PointIndex i : result.skipped)
-    skipped[i] = true;
-  std::vector<PointIndex> vertex_of (num_points + result.copies.size (), 0);
-  for (PointIndex i = 0; i < num_points; ++i)
-    if (!skipped[i])
-    {
-      vertex_of[i] = static_cast<PointIndex> (out.rows.size ());
-      out.rows.push_back (i);
-    }
-  for (std::size_t j = 0; j < result.copies.size (); ++j)
-  {
-    vertex_of[num_points + j] = static_cast<PointIndex> (out.rows.size ());
-    out.rows.push_back (result.copies[j]);
-  }
-  out.triangles = result.surface.triangles;
-  for (auto& t : out.triangles)
-    for (PointIndex& v : t)
-      v = vertex_of[v];
-  return out;
-}
-
 /** Progress on stderr: a line per stage; on a terminal the running stage's share in place. */
 class ProgressReport
 {
@@ -370,12 +336,7 @@ main (int argc, char** argv)
       std::cerr << "pcl_wrap: " << result.skipped.size () << (result.skipped.size () == 1 ? " point" : " points")
                 << " skipped for a non-finite coordinate or weight, and left out of the output\n";
 
-    const OutputVertices out = outputVertices (points.size (), result);
-    std::vector<Point3> vertices;
-    vertices.reserve (out.rows.size ());
-    for (const PointIndex r : out.rows)
-      vertices.push_back (points[r]);
-    apps::writeMesh (o.output, vertices, out.triangles, file.attributes.rows (out.rows));
+    const std::size_t vertices = apps::writeSurfaceMesh (o.output, file, result);
     if (!o.complex_json.empty ())
       apps::writeAtomically (o.complex_json,
                              [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.size ()); });
@@ -384,8 +345,8 @@ main (int argc, char** argv)
     if (progress)
     {
       const std::string kept = apps::attributesKeptBy (o.output, file.attributes);
-      std::cerr << "pcl_wrap: wrote " << o.output << ": " << out.triangles.size () << " triangles, " << vertices.size ()
-                << " vertices" << (kept.empty () ? "" : " with " + kept) << '\n';
+      std::cerr << "pcl_wrap: wrote " << o.output << ": " << result.surface.triangles.size () << " triangles, "
+                << vertices << " vertices" << (kept.empty () ? "" : " with " + kept) << '\n';
     }
     if (o.stats)
       apps::printSummary (std::cout, result.statistics);

@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "wrap_report.h"
 
+#include "mesh_file.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -189,6 +191,38 @@ printSummary (std::ostream& out, const WrapStatistics& s)
   for (std::size_t i = 0; i < s.timings.size (); ++i)
     out << (i ? ", " : "") << s.timings[i].stage << ' ' << s.timings[i].seconds;
   out << ")\n" << std::defaultfloat;
+}
+
+std::size_t
+writeSurfaceMesh (const std::string& path, const PointFile& file, const WrapResult& result)
+{
+  const std::size_t num_points = file.points.size ();
+  std::vector<bool> skipped (num_points, false);
+  for (const PointIndex i : result.skipped)
+    skipped[i] = true;
+  std::vector<PointIndex> rows;
+  std::vector<PointIndex> vertex_of (num_points + result.copies.size (), 0);
+  for (PointIndex i = 0; i < num_points; ++i)
+    if (!skipped[i])
+    {
+      vertex_of[i] = static_cast<PointIndex> (rows.size ());
+      rows.push_back (i);
+    }
+  for (std::size_t j = 0; j < result.copies.size (); ++j)
+  {
+    vertex_of[num_points + j] = static_cast<PointIndex> (rows.size ());
+    rows.push_back (result.copies[j]);
+  }
+  std::vector<std::array<PointIndex, 3>> triangles = result.surface.triangles;
+  for (auto& t : triangles)
+    for (PointIndex& v : t)
+      v = vertex_of[v];
+  std::vector<Point3> vertices;
+  vertices.reserve (rows.size ());
+  for (const PointIndex r : rows)
+    vertices.push_back (file.points[r]);
+  writeMesh (path, vertices, triangles, file.attributes.rows (rows));
+  return vertices.size ();
 }
 
 } // namespace pcl_wrap::apps

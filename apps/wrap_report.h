@@ -2,10 +2,13 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #pragma once
 
+#include "point_file.h"
+
 #include <pcl_wrap/wrap_result.h>
 
 #include <cstddef>
 #include <ostream>
+#include <string>
 
 namespace pcl_wrap::apps
 {
@@ -23,5 +26,11 @@ writeComplexJson (std::ostream& out, const WrapResult& result, std::size_t num_p
 /** \brief A short human summary of the statistics. */
 void
 printSummary (std::ostream& out, const WrapStatistics& stats);
+
+/** \brief Writes \a result's output surface to the mesh file \a path (writeMesh()): its vertices are
+  * \a file's points that were not skipped, in input order, then the sources of the copies, each
+  * with its attributes. Returns the number of vertices written. */
+std::size_t
+writeSurfaceMesh (const std::string& path, const PointFile& file, const WrapResult& result);
 
 } // namespace pcl_wrap::apps

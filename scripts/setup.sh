@@ -7,7 +7,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ccache pkg-config python3
   libpcl-dev libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libeigen3-dev libboost-dev
-  libgtest-dev mpi-default-dev
+  libgtest-dev mpi-default-dev mpi-default-bin  # MPI: Debian's VTK names it; pcl_wrap_mpi and its tests run it
   clang libclang-rt-dev llvm   # the sanitizer and fuzzing build (libFuzzer, ASan, UBSan)
   clang-format-14 git          # the format check of changed lines
   libcgal-demo   # sample data: the Stanford bunny, kitten, fandisk

@@ -61,7 +61,8 @@ Filtration::surface (double delta) const
 {
   const Data& d = dataOf (data_);
   const detail::Subcomplex x (*d.complex, membership (d, delta));
-  return d.input_indices.surface (detail::extractBoundary (*d.complex, x));
+  return d.input_indices.surface (
+      detail::extractBoundary (*d.complex, x, true, [&] (std::uint32_t v) { return d.input_indices (v); }));
 }
 
 Filtration

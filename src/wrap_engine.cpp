@@ -234,7 +234,7 @@ WrapEngine::extractSurface ()
     classification_.reset ();
   if (!defaultSurface ())
   {
-    w_ = extractBoundary (*complex_, *x_);
+    w_ = extractBoundary (*complex_, *x_, true, inputKey ());
     return; // timed with the report, as the boundary stage
   }
   DefaultSurface::Output out = surface_->surface (*x_, vertex_positions_, parameters_.output == Output::closed,
@@ -251,7 +251,7 @@ WrapEngine::report ()
   const SimplicialComplex& complex = *complex_;
   WrapStatistics& stats = result_.statistics;
   if (parameters_.keep_complex)
-    result_.w = input_indices_.surface (defaultSurface () ? extractBoundary (complex, *x_) : w_);
+    result_.w = input_indices_.surface (defaultSurface () ? extractBoundary (complex, *x_, true, inputKey ()) : w_);
   if (parameters_.manifold && !defaultSurface ())
     split_ = splitPinches (complex, *x_, w_);
   if (split_)

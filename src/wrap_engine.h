@@ -18,6 +18,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -86,6 +87,12 @@ public:
 
 private:
   bool defaultSurface () const;
+  /** W's sheets take their turn from the input indices, so that any process that computes the
+    * same W turns them alike (orientSheetTriangles). */
+  std::function<std::uint32_t (std::uint32_t)> inputKey () const
+  {
+    return [this] (std::uint32_t v) { return input_indices_ (v); };
+  }
   void checkX () const;
   void checkSurface () const;
 

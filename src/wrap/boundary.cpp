@@ -9,16 +9,13 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <utility>
 
 namespace pcl_wrap::detail
 {
 namespace
 {
-
-// For a positively oriented tetrahedron, the facet opposite local vertex i listed so that its
-// normal points away from vertex i: orientation(a, b, c, v_i) < 0 for (a, b, c) below.
-constexpr int OUTWARD_FACET[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 using Triangle = std::array<std::uint32_t, 3>;
 
@@ -31,25 +28,43 @@ hasDirectedEdge (const Triangle& t, std::uint32_t u, std::uint32_t v)
   return false;
 }
 
-/** Orients the sheet triangles (those with no tetrahedron behind them) so that neighbours across
-  * an edge shared by exactly two of them traverse it in opposite directions. */
+} // namespace
+
 void
-orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sheet, std::vector<Triangle>& out)
+orientSheetTriangles (std::vector<Triangle>& triangles, const std::function<std::uint32_t (std::uint32_t)>& key)
 {
-  const std::size_t first = out.size ();
-  out.resize (first + sheet.size ());
-  std::vector<std::pair<SimplexId, std::uint32_t>> edge_uses (3 * sheet.size ()); // (edge id, index in sheet)
-  parallelForEach (sheet.size (), [&] (std::size_t i) {
-    const std::uint32_t* v = complex.vertices (2, sheet[i]);
-    out[first + i] = {v[0], v[1], v[2]};
-    int k = 0;
-    for (unsigned mask : {3u, 5u, 6u})
-      edge_uses[3 * i + k++] = {complex.face (2, sheet[i], mask).id, static_cast<std::uint32_t> (i)};
+  // Everything below is in keys, so that the result depends on the set of triangles and the keys
+  // alone: not on the order of the list, nor on how the caller numbers vertices.
+  const std::size_t n = triangles.size ();
+  std::vector<Triangle> keyed (n);
+  parallelForEach (n, [&] (std::size_t i) {
+    for (int c = 0; c < 3; ++c)
+      keyed[i][c] = key (triangles[i][c]);
+  });
+  const auto sorted = [&] (std::size_t i) {
+    Triangle k = keyed[i];
+    std::sort (k.begin (), k.end ());
+    return k;
+  };
+  std::vector<std::uint32_t> order (n);
+  for (std::uint32_t i = 0; i < n; ++i)
+    order[i] = i;
+  tbb::parallel_sort (order.begin (), order.end (),
+                      [&] (std::uint32_t a, std::uint32_t b) { return sorted (a) < sorted (b); });
+  // (edge as its two keys ascending, rank of the triangle in order)
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edge_uses (3 * n);
+  parallelForEach (n, [&] (std::size_t r) {
+    const Triangle& t = keyed[order[r]];
+    for (int e = 0; e < 3; ++e)
+    {
+      const std::uint32_t u = std::min (t[e], t[(e + 1) % 3]), w = std::max (t[e], t[(e + 1) % 3]);
+      edge_uses[3 * r + e] = {std::uint64_t (u) << 32 | w, static_cast<std::uint32_t> (r)};
+    }
   });
   tbb::parallel_sort (edge_uses.begin (), edge_uses.end ());
   // At most one neighbour across each of a triangle's three edges: a flat array, not a list each.
   constexpr std::uint32_t NONE = ~std::uint32_t (0);
-  std::vector<std::array<std::uint32_t, 3>> neighbours (sheet.size (), {NONE, NONE, NONE});
+  std::vector<std::array<std::uint32_t, 3>> neighbours (n, {NONE, NONE, NONE});
   const auto link = [&] (std::uint32_t i, std::uint32_t j) {
     *std::find (neighbours[i].begin (), neighbours[i].end (), NONE) = j;
   };
@@ -65,33 +80,35 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
     }
     a = b;
   }
-  std::vector<std::uint8_t> done (sheet.size (), 0);
+  // Each sheet starts from its first triangle in order, its keys ascending, and spreads from there.
+  std::vector<std::uint8_t> done (n, 0);
   std::vector<std::uint32_t> stack;
-  for (std::uint32_t root = 0; root < sheet.size (); ++root)
+  for (std::uint32_t root = 0; root < n; ++root)
   {
     if (done[root])
       continue;
     done[root] = 1;
+    keyed[order[root]] = sorted (order[root]);
     stack.push_back (root);
     while (!stack.empty ())
     {
       const std::uint32_t i = stack.back ();
       stack.pop_back ();
-      const Triangle& t = out[first + i];
+      const Triangle& t = keyed[order[i]];
       for (std::uint32_t j : neighbours[i])
       {
         if (j == NONE || done[j])
           continue;
         done[j] = 1;
-        Triangle& n = out[first + j];
+        Triangle& nb = keyed[order[j]];
         // The shared edge, traversed as in t; the neighbour must traverse it the other way.
         for (int e = 0; e < 3; ++e)
         {
           const std::uint32_t u = t[e], w = t[(e + 1) % 3];
-          if (std::count (n.begin (), n.end (), u) && std::count (n.begin (), n.end (), w))
+          if (std::count (nb.begin (), nb.end (), u) && std::count (nb.begin (), nb.end (), w))
           {
-            if (hasDirectedEdge (n, u, w))
-              std::swap (n[1], n[2]);
+            if (hasDirectedEdge (nb, u, w))
+              std::swap (nb[1], nb[2]);
             break;
           }
         }
@@ -99,7 +116,16 @@ orientSheets (const SimplicialComplex& complex, const std::vector<SimplexId>& sh
       }
     }
   }
+  // Back to the caller's vertices, each triangle turned as its keys are.
+  parallelForEach (n, [&] (std::size_t i) {
+    Triangle& t = triangles[i];
+    if (!hasDirectedEdge (keyed[i], key (t[0]), key (t[1])))
+      std::swap (t[1], t[2]);
+  });
 }
+
+namespace
+{
 
 /** Appends to \a w the facets that \a facets_of (t) flags (bit i: the facet opposite local vertex
   * i) of every tetrahedron t, each oriented away from its tetrahedron, in the order of the
@@ -132,7 +158,8 @@ writeFacets (const SimplicialComplex& complex, const FacetsOf& facets_of, Bounda
 } // namespace
 
 Boundary
-extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool orient_sheets)
+extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool orient_sheets,
+                 const std::function<std::uint32_t (std::uint32_t)>& sheet_key)
 {
   Boundary w;
   // Facets of X's tetrahedra with one tetrahedron of X, found once (a mask per tetrahedron).
@@ -165,14 +192,15 @@ extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool ori
     return found;
   };
   const std::vector<SimplexId> sheet = principal (2);
+  std::vector<Triangle> sheet_triangles (sheet.size ());
+  parallelForEach (sheet.size (), [&] (std::size_t i) {
+    const std::uint32_t* v = complex.vertices (2, sheet[i]);
+    sheet_triangles[i] = {v[0], v[1], v[2]};
+  });
   if (orient_sheets)
-    orientSheets (complex, sheet, w.triangles);
-  else
-    for (SimplexId id : sheet)
-    {
-      const std::uint32_t* v = complex.vertices (2, id);
-      w.triangles.push_back ({v[0], v[1], v[2]});
-    }
+    orientSheetTriangles (
+        sheet_triangles, sheet_key ? sheet_key : [] (std::uint32_t v) { return v; });
+  w.triangles.insert (w.triangles.end (), sheet_triangles.begin (), sheet_triangles.end ());
   w.triangle_ids.insert (w.triangle_ids.end (), sheet.begin (), sheet.end ());
   for (SimplexId e : principal (1))
   {

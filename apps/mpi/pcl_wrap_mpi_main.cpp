@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// pcl_wrap_mpi: the Wrap's raw W over MPI ranks, each holding one tile of the points
+// (docs/mpi.md).
+#include "distributed_retraction.h"
+#include "message_exchange.h"
+#include "star_completion.h"
+#include "tile_complex.h"
+#include "tile_partition.h"
+#include "tile_wrap.h"
+
+#include "mesh_file.h"
+#include "point_file.h"
+#include "wrap_report.h"
+
+#include "delaunay/input_points.h"
+#include "delaunay/power_predicates.h"
+#include "util/stage_clock.h"
+#include "wrap/boundary.h"
+#include "wrap/classification.h"
+#include "wrap/subcomplex.h"
+
+#include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/statistics_json.h>
+#include <pcl_wrap/version.h>
+
+#include <mpi.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace pcl_wrap;
+
+namespace
+{
+
+struct Options
+{
+  std::string input, output, stats_json, complex_json;
+  bool raw = false, stats = false, quiet = false, weights_column = false;
+  std::string weight_field;
+};
+
+const char* const USAGE =
+    "usage: mpirun -np K pcl_wrap_mpi INPUT OUTPUT --raw [options]\n"
+    "The Wrap's raw W (as pcl_wrap --raw) computed by K MPI ranks, each holding one tile of the\n"
+    "points; the output is the same as one process's.\n"
+    "  --raw                 the paper's W = Bd X (required: the default surface is single-process)\n"
+    "  --stats               print what the construction did, per tile and in total\n"
+    "  --stats-json FILE     the statistics as JSON, as pcl_wrap writes them\n"
+    "  --complex FILE        X and W as JSON, as pcl_wrap --complex writes them (no classes)\n"
+    "  --weights-column      .xyz/.txt: the 4th column holds weights\n"
+    "  --weight-field NAME   .pcd/.ply: the field holding weights\n"
+    "  --quiet               nothing on stderr but errors\n"
+    "  --version, -h/--help\n";
+
+/** Parses the command line on every rank alike; a usage error ends the run with 2. */
+bool
+parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
+{
+  const auto usageError = [&] (const std::string& message) {
+    if (rank == 0)
+      std::cerr << "pcl_wrap_mpi: " << message << " (see pcl_wrap_mpi --help)\n";
+    exit_code = 2;
+    return false;
+  };
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    const auto value = [&] (std::string& into) {
+      if (i + 1 >= argc)
+        return false;
+      into = argv[++i];
+      return true;
+    };
+    if (arg == "-h" || arg == "--help" || arg == "--version")
+    {
+      if (rank == 0)
+        std::cout << (arg == "--version" ? std::string ("pcl_wrap_mpi ") + PCL_WRAP_VERSION + "\n" : USAGE);
+      exit_code = 0;
+      return false;
+    }
+    else if (arg == "--raw")
+      o.raw = true;
+    else if (arg == "--stats")
+      o.stats = true;
+    else if (arg == "--quiet")
+      o.quiet = true;
+    else if (arg == "--weights-column")
+      o.weights_column = true;
+    else if (arg == "--stats-json" || arg == "--complex" || arg == "--weight-field")
+    {
+      std::string& into = arg == "--stats-json" ? o.stats_json : arg == "--complex" ? o.complex_json : o.weight_field;
+      if (!value (into))
+        return usageError (arg + " needs a value");
+    }
+    else if (arg.size () > 1 && arg[0] == '-')
+      return usageError ("unknown option " + arg);
+    else
+      positional.push_back (arg);
+  }
+  if (positional.size () != 2)
+    return usageError ("give an input file and an output file");
+  if (!o.raw)
+    return usageError ("the default surface is computed by one process (pcl_wrap); give --raw for the raw W");
+  o.input = positional[0];
+  o.output = positional[1];
+  if (!apps::isMeshFormat (o.output))
+    return usageError (o.output + ": the output must be .ply, .obj, .vtk, .off or .stl");
+  return true;
+}
+
+double
+largestOverRanks (MPI_Comm comm, double value)
+{
+  double out = 0;
+  MPI_Allreduce (&value, &out, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return out;
+}
+
+/** The flat k-simplex lists of all ranks on rank 0, as a SimplexList of X. */
+SimplexList
+gatheredX (MPI_Comm comm, const std::vector<std::uint32_t>& local, int k, const detail::InputPoints& s)
+{
+  SimplexList list;
+  list.vertices = mpi::gatherToRoot (comm, local);
+  for (PointIndex& v : list.vertices)
+    v = s.input_index[v];
+  list.classes.assign (list.vertices.size () / (k + 1), SimplexClass::centered);
+  list.in_x.assign (list.classes.size (), 1);
+  return list;
+}
+
+/** Gathers the tiles' parts of W on rank 0, in input indices, sheets turned as one process turns
+  * them. */
+WrapSurface
+gatheredW (MPI_Comm comm, const mpi::TileWrap& tile, const detail::InputPoints& s)
+{
+  WrapSurface w;
+  w.triangles = mpi::gatherToRoot (comm, tile.faces);
+  std::vector<std::array<std::uint32_t, 3>> sheets = mpi::gatherToRoot (comm, tile.sheets);
+  w.dangling_edges = mpi::gatherToRoot (comm, tile.dangling_edges);
+  w.isolated_vertices = mpi::gatherToRoot (comm, tile.isolated_vertices);
+  const auto input = [&] (std::uint32_t v) { return s.input_index[v]; };
+  for (auto& t : w.triangles)
+    for (auto& v : t)
+      v = input (v);
+  for (auto& t : sheets)
+    for (auto& v : t)
+      v = input (v);
+  detail::orientSheetTriangles (sheets, [] (std::uint32_t v) { return v; });
+  w.triangles.insert (w.triangles.end (), sheets.begin (), sheets.end ());
+  for (auto& e : w.dangling_edges)
+    e = {input (e[0]), input (e[1])};
+  for (auto& v : w.isolated_vertices)
+    v = input (v);
+  return w;
+}
+
+int
+run (const Options& o, MPI_Comm comm)
+{
+  int ranks = 0, rank = 0;
+  MPI_Comm_size (comm, &ranks);
+  MPI_Comm_rank (comm, &rank);
+  WrapResult result;
+  WrapStatistics& stats = result.statistics;
+  const StageObserver no_observer;
+  detail::StageClock clock (stats, no_observer);
+
+  // Every rank reads the points and selects S alike; from here on it keeps only its tile's.
+  const apps::PointFile file = apps::readPointFile (o.input, o.weight_field, o.weights_column);
+  detail::InputPoints s = detail::selectInputPoints (file.points, file.weights);
+  if (s.positions.empty ())
+    throw apps::FileError (o.input + ": no point with finite coordinates");
+  const mpi::TilePartition partition = mpi::partitionIntoTiles (s.positions, ranks);
+  mpi::TilePoints tile;
+  double w_max = 0;
+  for (std::uint32_t i = 0; i < s.positions.size (); ++i)
+  {
+    w_max = std::max (w_max, s.weights[i]);
+    if (partition.tile_of_point[i] == static_cast<std::uint32_t> (rank))
+      tile.points.push_back ({s.positions[i], s.weights[i], i, static_cast<std::uint32_t> (rank)});
+  }
+  tile.own = tile.points.size ();
+  clock.stageDone ("input");
+
+  mpi::StarCompletionStatistics completion;
+  const detail::Triangulation triangulation = mpi::completeStars (comm, tile, partition.boxes, w_max, completion);
+  const int dimension = static_cast<int> (largestOverRanks (comm, triangulation.dimension));
+  if (dimension < 3)
+    throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +
+                              "): run pcl_wrap, which handles that, on one process");
+  std::vector<std::uint32_t> hidden;
+  for (std::uint32_t h : triangulation.hidden)
+    if (h < tile.own)
+      hidden.push_back (tile.points[h].index);
+  clock.stageDone ("triangulation");
+
+  const mpi::TileComplex part (tile, triangulation, static_cast<std::uint32_t> (rank));
+  const detail::PowerPredicates predicates (part.positions (), part.weights ());
+  const detail::Classification classification = detail::classify (part.complex (), predicates);
+  clock.stageDone ("classification");
+
+  detail::Subcomplex y (part.complex ());
+  mpi::DistributedRetraction retraction (comm, part, classification, y);
+  retraction.retract ();
+  clock.stageDone ("retraction");
+
+  const mpi::TileWrap wrap = mpi::extractTileWrap (part, y);
+  for (int k = 0; k <= 3; ++k)
+    result.complex[k] = gatheredX (comm, wrap.x[k], k, s);
+  result.w = gatheredW (comm, wrap, s);
+  result.surface.triangles = result.w.triangles;
+  result.hidden = mpi::gatherToRoot (comm, hidden);
+  for (auto& h : result.hidden)
+    h = s.input_index[h];
+  std::sort (result.hidden.begin (), result.hidden.end ()); // in input order, as one process lists them
+  clock.stageDone ("boundary");
+
+  // Statistics: counts summed over the tiles, each simplex counted by the tile it belongs to.
+  std::array<std::uint64_t, 12> classes{};
+  for (int k = 0; k <= 3; ++k)
+    for (detail::SimplexId id = 0; id < part.complex ().size (k); ++id)
+      if (part.belongsHere ({k, id}))
+        ++classes[3 * k + static_cast<int> (classification.of ({k, id}))];
+  for (int k = 0; k <= 3; ++k)
+    for (int c = 0; c < 3; ++c)
+      stats.simplices[k][c] = mpi::sumOverRanks (comm, classes[3 * k + c]);
+  stats.points_input = file.points.size ();
+  stats.points_skipped = s.skipped.size ();
+  stats.points_duplicate = s.duplicates.size ();
+  stats.points_hidden = result.hidden.size ();
+  stats.points_used = s.positions.size () - mpi::sumOverRanks (comm, hidden.size ());
+  stats.triangulation_dimension = dimension;
+  stats.collapses = mpi::sumOverRanks (comm, retraction.collapses ());
+  for (int k = 0; k <= 3; ++k)
+    stats.x_simplices[k] = result.complex[k].size ();
+  stats.w_triangles = result.w.triangles.size ();
+  stats.w_dangling_edges = result.w.dangling_edges.size ();
+  stats.w_isolated_vertices = result.w.isolated_vertices.size ();
+  result.skipped = s.skipped;
+  result.duplicates = s.duplicates;
+  // Each stage's time is the slowest rank's: the others wait for it at the next exchange.
+  stats.total_seconds = 0;
+  for (StageTiming& t : stats.timings)
+    stats.total_seconds += t.seconds = largestOverRanks (comm, t.seconds);
+
+  rusage usage{};
+  getrusage (RUSAGE_SELF, &usage);
+  const double peak_mb = static_cast<double> (usage.ru_maxrss) / 1024.0;
+  const std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peak_mb});
+  const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);
+  const std::size_t bytes = mpi::sumOverRanks (comm, completion.bytes_sent);
+  const std::size_t removals = mpi::sumOverRanks (comm, retraction.removalsSent ());
+  if (rank != 0)
+    return 0;
+
+  apps::writeSurfaceMesh (o.output, file, result);
+  if (!o.complex_json.empty ())
+    apps::writeAtomically (o.complex_json,
+                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, file.points.size ()); });
+  if (!o.stats_json.empty ())
+    apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+  if (o.stats)
+  {
+    apps::printSummary (std::cout, stats);
+    std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / s.positions.size ()
+              << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent\n"
+              << "retraction:    " << retraction.rounds () << " rounds, " << removals << " removals sent\n"
+              << "peak memory:   ";
+    for (std::size_t r = 0; r < peaks.size (); ++r)
+      std::cout << (r ? ", " : "") << static_cast<long> (peaks[r]) << " MB";
+    std::cout << " (per rank)\n";
+  }
+  if (!o.quiet)
+    std::cerr << "pcl_wrap_mpi: wrote " << o.output << ": " << result.surface.triangles.size () << " triangles from "
+              << ranks << " tiles\n";
+  return 0;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  MPI_Init (&argc, &argv);
+  int rank = 0;
+  MPI_Comm_rank (MPI_COMM_WORLD, &rank);
+  Options o;
+  int code = 0;
+  if (parseOptions (argc, argv, o, rank, code))
+    try
+    {
+      code = run (o, MPI_COMM_WORLD);
+    }
+    catch (const std::exception& e)
+    {
+      // Every rank reads the same input and fails alike; a failure of one rank alone ends all.
+      std::cerr << "pcl_wrap_mpi: " << e.what () << '\n';
+      MPI_Abort (MPI_COMM_WORLD, 1);
+    }
+  MPI_Finalize ();
+  return code;
+}

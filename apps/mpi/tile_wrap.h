@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "tile_complex.h"
+
+#include "wrap/subcomplex.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::mpi
+{
+
+/** \brief The simplices of X and W that belong to one tile, in indices of S. */
+struct TileWrap
+{
+  /** Per dimension, k + 1 indices per simplex of X (tetrahedra positively oriented). */
+  std::array<std::vector<std::uint32_t>, 4> x;
+  /** W's triangles with a tetrahedron of X behind them, facing away from it. */
+  std::vector<std::array<std::uint32_t, 3>> faces;
+  /** W's triangles on no tetrahedron of X, not yet turned (orientSheetTriangles() does that once
+    * they are all in one place). */
+  std::vector<std::array<std::uint32_t, 3>> sheets;
+  std::vector<std::array<std::uint32_t, 2>> dangling_edges; ///< smaller index first
+  std::vector<std::uint32_t> isolated_vertices;
+};
+
+/** \brief What of X (the retracted \a y) and of W = Bd X belongs to this tile. */
+TileWrap
+extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y);
+
+} // namespace pcl_wrap::mpi

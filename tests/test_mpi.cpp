@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+//
+// pcl_wrap_mpi under a real mpirun, 1 to 4 ranks (and 8 on a cloud of 6 points), against the
+// single process: X and W identical, simplex by simplex, triangles with their orientation.
+#include "support/samplers.h"
+
+#include "point_file.h"
+#include "wrap_report.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+using namespace pcl_wrap;
+namespace fs = std::filesystem;
+
+fs::path
+scratch ()
+{
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path () / ("pcl_wrap_test_mpi_" + std::to_string (::getpid ()));
+    fs::create_directories (d);
+    return d;
+  }();
+  return dir;
+}
+
+/** Writes x y z [w] lines (NaN as "nan"). */
+fs::path
+writeCloud (const std::string& name, const std::vector<Point3>& points, const std::vector<double>& weights = {})
+{
+  const fs::path path = scratch () / (name + ".xyz");
+  std::ofstream out (path);
+  out.precision (17);
+  for (std::size_t i = 0; i < points.size (); ++i)
+  {
+    out << points[i][0] << ' ' << points[i][1] << ' ' << points[i][2];
+    if (!weights.empty ())
+      out << ' ' << weights[i];
+    out << '\n';
+  }
+  return path;
+}
+
+std::string
+readFile (const fs::path& path)
+{
+  std::ifstream in (path);
+  std::stringstream s;
+  s << in.rdbuf ();
+  return s.str ();
+}
+
+/** The part of a --complex JSON that holds the input's fate, X and W. */
+std::string
+xAndW (const std::string& json)
+{
+  const std::size_t end = json.find (",\"surface\"");
+  return end == std::string::npos ? "(no complex: " + json.substr (0, 200) + ")" : json.substr (0, end);
+}
+
+/** Runs pcl_wrap_mpi on \a ranks ranks; returns its exit status. */
+int
+runMpi (int ranks, const std::string& arguments, const fs::path& log)
+{
+  // mpirun refuses root unless told; the containers the tests run in often are root.
+  ::setenv ("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv ("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const std::string command = std::string (PCL_WRAP_MPIRUN) + " --oversubscribe -np " + std::to_string (ranks) + " " +
+                              PCL_WRAP_MPI_CLI + " " + arguments + " > " + log.string () + " 2>&1";
+  const int status = std::system (command.c_str ());
+  return WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+}
+
+/** X and W of one process on \a cloud, as pcl_wrap --complex writes them. */
+std::string
+singleProcess (const fs::path& cloud, bool weights_column)
+{
+  const apps::PointFile file = apps::readPointFile (cloud.string (), "", weights_column);
+  WrapParameters parameters;
+  parameters.output = Output::raw;
+  parameters.keep_complex = true;
+  const WrapResult result = computeWrap (file.points, file.weights, parameters);
+  std::ostringstream json;
+  apps::writeComplexJson (json, result, file.points.size ());
+  return xAndW (json.str ());
+}
+
+void
+expectIdentical (const fs::path& cloud, std::vector<int> rank_counts = {1, 2, 3, 4}, bool weights_column = false)
+{
+  const std::string expected = singleProcess (cloud, weights_column);
+  for (int ranks : rank_counts)
+  {
+    const fs::path json = scratch () / (cloud.stem ().string () + "_" + std::to_string (ranks) + ".json");
+    const fs::path log = scratch () / "mpi.log";
+    const std::string arguments = cloud.string () + " " + (scratch () / "out.ply").string () +
+                                  " --raw --quiet --complex " + json.string () +
+                                  (weights_column ? " --weights-column" : "");
+    ASSERT_EQ (runMpi (ranks, arguments, log), 0) << readFile (log);
+    EXPECT_TRUE (xAndW (readFile (json)) == expected) << cloud << " on " << ranks << " ranks: X or W differ";
+  }
+}
+
+TEST (Mpi, RandomPointsInACube)
+{
+  expectIdentical (writeCloud ("cube", test::cubeSample (3000, 1)));
+}
+
+TEST (Mpi, NoisySphere)
+{
+  expectIdentical (writeCloud ("sphere", test::sphereSample (6000, 2, 3e-3)));
+}
+
+TEST (Mpi, TorusWithItsTunnel)
+{
+  expectIdentical (writeCloud ("torus", test::torusSample (5000, 3)));
+}
+
+TEST (Mpi, TerrainOfSheets)
+{
+  expectIdentical (writeCloud ("terrain", test::terrainSample (3000, 4)));
+}
+
+TEST (Mpi, WeightedPointsSomeHidden)
+{
+  std::mt19937 random (5);
+  std::uniform_real_distribution<double> weight (0.0, 4e-3);
+  const std::vector<Point3> points = test::cubeSample (2000, 5);
+  std::vector<double> weights (points.size ());
+  for (double& w : weights)
+    w = weight (random);
+  expectIdentical (writeCloud ("weighted", points, weights), {1, 2, 3, 4}, true);
+}
+
+TEST (Mpi, CosphericalGrid)
+{
+  std::vector<Point3> grid;
+  for (int i = 0; i < 11; ++i)
+    for (int j = 0; j < 11; ++j)
+      for (int k = 0; k < 11; ++k)
+        grid.push_back ({double (i), double (j), double (k)});
+  expectIdentical (writeCloud ("grid", grid));
+}
+
+TEST (Mpi, TileBorderThroughAGridPlane)
+{
+  // The first cut halves the longest side, z, at the median: through the 400 grid points at z = 0.
+  std::vector<Point3> points;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j)
+      points.push_back ({double (i), double (j), 0.0});
+  for (const Point3& p : test::cubeSample (1200, 6))
+    points.push_back ({19 * p[0], 19 * p[1], p[2] < 0.5 ? 21 * p[2] - 11 : 21 * p[2] - 10});
+  expectIdentical (writeCloud ("plane", points));
+}
+
+TEST (Mpi, DuplicatesAndNonFinitePoints)
+{
+  std::vector<Point3> points = test::cubeSample (1000, 7);
+  for (int i = 0; i < 40; ++i)
+    points.push_back (points[7 * i]);
+  points.push_back ({std::nan (""), 0, 0});
+  expectIdentical (writeCloud ("duplicates", points));
+}
+
+TEST (Mpi, FarApartClustersAndTilesOfOnePoint)
+{
+  std::vector<Point3> points = test::cubeSample (800, 8);
+  for (const Point3& p : test::cubeSample (800, 9))
+    points.push_back ({p[0] + 100, p[1], p[2]});
+  expectIdentical (writeCloud ("far", points));
+  // Six points on eight ranks: tiles of one point, whose every tetrahedron reaches the others,
+  // and two tiles with none.
+  expectIdentical (writeCloud ("six", test::cubeSample (6, 10)), {4, 8});
+}
+
+TEST (Mpi, RealScan)
+{
+  expectIdentical (fs::path (PCL_WRAP_DATA_DIR) / "bunny00.off", {2, 4});
+}
+
+TEST (Mpi, FlatInputIsAClearError)
+{
+  std::vector<Point3> points;
+  for (const Point3& p : test::cubeSample (200, 11))
+    points.push_back ({p[0], p[1], 0.0});
+  const fs::path log = scratch () / "flat.log";
+  EXPECT_EQ (runMpi (2, writeCloud ("flat", points).string () + " " + (scratch () / "f.ply").string () + " --raw", log),
+             1);
+  EXPECT_NE (readFile (log).find ("span no volume"), std::string::npos) << readFile (log);
+}
+
+TEST (Mpi, WithoutRawIsAUsageError)
+{
+  const fs::path log = scratch () / "usage.log";
+  EXPECT_EQ (runMpi (2, writeCloud ("usage", test::cubeSample (50, 12)).string () + " u.ply", log), 2);
+  EXPECT_NE (readFile (log).find ("--raw"), std::string::npos) << readFile (log);
+}
+
+} // namespace
