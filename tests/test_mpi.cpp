@@ -188,6 +188,34 @@ TEST (Mpi, FarApartClustersAndTilesOfOnePoint)
   expectIdentical (writeCloud ("six", test::cubeSample (6, 10)), {4, 8});
 }
 
+TEST (Mpi, FolderOfTileFilesIsTheirConcatenation)
+{
+  // Three files of a noisy sphere, read by different ranks; one process reads them as one file.
+  std::vector<Point3> points = test::sphereSample (4000, 13, 3e-3);
+  points[1234] = {std::nan (""), 0, 0};
+  points[3000] = points[17]; // a duplicate across files
+  const fs::path folder = scratch () / "tiles";
+  fs::create_directories (folder);
+  const std::size_t cut[] = {0, 1500, 2600, points.size ()};
+  for (int f = 0; f < 3; ++f)
+  {
+    const std::vector<Point3> part (points.begin () + cut[f], points.begin () + cut[f + 1]);
+    fs::rename (writeCloud ("part", part), folder / ("part" + std::to_string (f) + ".xyz"));
+  }
+  const std::string expected = singleProcess (writeCloud ("whole", points), false);
+  for (int ranks : {1, 2, 3, 4})
+  {
+    const fs::path json = scratch () / "folder.json", log = scratch () / "folder.log";
+    ASSERT_EQ (runMpi (ranks,
+                       folder.string () + " " + (scratch () / "folder.ply").string () + " --raw --quiet --complex " +
+                           json.string (),
+                       log),
+               0)
+        << readFile (log);
+    EXPECT_TRUE (xAndW (readFile (json)) == expected) << "a folder of three files on " << ranks << " ranks";
+  }
+}
+
 TEST (Mpi, RealScan)
 {
   expectIdentical (fs::path (PCL_WRAP_DATA_DIR) / "bunny00.off", {2, 4});
@@ -202,6 +230,30 @@ TEST (Mpi, FlatInputIsAClearError)
   EXPECT_EQ (runMpi (2, writeCloud ("flat", points).string () + " " + (scratch () / "f.ply").string () + " --raw", log),
              1);
   EXPECT_NE (readFile (log).find ("span no volume"), std::string::npos) << readFile (log);
+}
+
+TEST (Mpi, MissingOrMalformedInputIsAClearError)
+{
+  const fs::path log = scratch () / "missing.log", out = scratch () / "m.ply";
+  EXPECT_EQ (runMpi (2, (scratch () / "nothing_here.xyz").string () + " " + out.string () + " --raw", log), 1);
+  EXPECT_NE (readFile (log).find ("no such file or folder"), std::string::npos) << readFile (log);
+  const fs::path bad = scratch () / "bad.xyz";
+  std::ofstream (bad) << "1 2 3\n4 5\n";
+  EXPECT_EQ (runMpi (2, bad.string () + " " + out.string () + " --raw", log), 1);
+  EXPECT_NE (readFile (log).find ("line 2"), std::string::npos) << readFile (log);
+  EXPECT_FALSE (fs::exists (out));
+}
+
+TEST (Mpi, OutputOverTheInputIsRefused)
+{
+  const fs::path cloud = writeCloud ("over", test::cubeSample (50, 14)), log = scratch () / "over.log";
+  const std::string before = readFile (cloud);
+  EXPECT_EQ (runMpi (2,
+                     cloud.string () + " " + (scratch () / "o.ply").string () + " --raw --stats-json " +
+                         cloud.string (),
+                     log),
+             2);
+  EXPECT_EQ (readFile (cloud), before);
 }
 
 TEST (Mpi, WithoutRawIsAUsageError)

@@ -7,14 +7,14 @@
 #include "message_exchange.h"
 #include "star_completion.h"
 #include "tile_complex.h"
-#include "tile_partition.h"
+#include "tile_input.h"
+#include "tile_routing.h"
 #include "tile_wrap.h"
 
 #include "mesh_file.h"
 #include "point_file.h"
 #include "wrap_report.h"
 
-#include "delaunay/input_points.h"
 #include "delaunay/power_predicates.h"
 #include "util/stage_clock.h"
 #include "wrap/boundary.h"
@@ -30,6 +30,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
+#include <memory>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -49,7 +51,8 @@ struct Options
 const char* const USAGE =
     "usage: mpirun -np K pcl_wrap_mpi INPUT OUTPUT --raw [options]\n"
     "The Wrap's raw W (as pcl_wrap --raw) computed by K MPI ranks, each holding one tile of the\n"
-    "points; the output is the same as one process's.\n"
+    "points; the output is the same as one process's. INPUT is a point file, or a folder of point\n"
+    "files read in the order of their names as one (docs/mpi.md).\n"
     "  --raw                 the paper's W = Bd X (required: the default surface is single-process)\n"
     "  --stats               print what the construction did, per tile and in total\n"
     "  --stats-json FILE     the statistics as JSON, as pcl_wrap writes them\n"
@@ -113,6 +116,10 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
   o.output = positional[1];
   if (!apps::isMeshFormat (o.output))
     return usageError (o.output + ": the output must be .ply, .obj, .vtk, .off or .stl");
+  std::error_code error;
+  for (const std::string& written : {o.output, o.stats_json, o.complex_json})
+    if (!written.empty () && std::filesystem::equivalent (written, o.input, error))
+      return usageError (written + " is the input: it would be overwritten");
   return true;
 }
 
@@ -126,41 +133,46 @@ largestOverRanks (MPI_Comm comm, double value)
 
 /** The flat k-simplex lists of all ranks on rank 0, as a SimplexList of X. */
 SimplexList
-gatheredX (MPI_Comm comm, const std::vector<std::uint32_t>& local, int k, const detail::InputPoints& s)
+gatheredX (MPI_Comm comm, const std::vector<std::uint32_t>& local, int k)
 {
   SimplexList list;
   list.vertices = mpi::gatherToRoot (comm, local);
-  for (PointIndex& v : list.vertices)
-    v = s.input_index[v];
   list.classes.assign (list.vertices.size () / (k + 1), SimplexClass::centered);
   list.in_x.assign (list.classes.size (), 1);
   return list;
 }
 
-/** Gathers the tiles' parts of W on rank 0, in input indices, sheets turned as one process turns
-  * them. */
+/** Gathers the tiles' parts of W on rank 0, sheets turned as one process turns them. */
 WrapSurface
-gatheredW (MPI_Comm comm, const mpi::TileWrap& tile, const detail::InputPoints& s)
+gatheredW (MPI_Comm comm, const mpi::TileWrap& tile)
 {
   WrapSurface w;
   w.triangles = mpi::gatherToRoot (comm, tile.faces);
   std::vector<std::array<std::uint32_t, 3>> sheets = mpi::gatherToRoot (comm, tile.sheets);
-  w.dangling_edges = mpi::gatherToRoot (comm, tile.dangling_edges);
-  w.isolated_vertices = mpi::gatherToRoot (comm, tile.isolated_vertices);
-  const auto input = [&] (std::uint32_t v) { return s.input_index[v]; };
-  for (auto& t : w.triangles)
-    for (auto& v : t)
-      v = input (v);
-  for (auto& t : sheets)
-    for (auto& v : t)
-      v = input (v);
   detail::orientSheetTriangles (sheets, [] (std::uint32_t v) { return v; });
   w.triangles.insert (w.triangles.end (), sheets.begin (), sheets.end ());
-  for (auto& e : w.dangling_edges)
-    e = {input (e[0]), input (e[1])};
-  for (auto& v : w.isolated_vertices)
-    v = input (v);
+  w.dangling_edges = mpi::gatherToRoot (comm, tile.dangling_edges);
+  w.isolated_vertices = mpi::gatherToRoot (comm, tile.isolated_vertices);
   return w;
+}
+
+/** \a local of every rank on rank 0, sorted. */
+template <class T>
+std::vector<T>
+gatheredSorted (MPI_Comm comm, const std::vector<T>& local)
+{
+  std::vector<T> all = mpi::gatherToRoot (comm, local);
+  std::sort (all.begin (), all.end ());
+  return all;
+}
+
+/** This process's peak resident memory so far. */
+double
+peakMegabytes ()
+{
+  rusage usage{};
+  getrusage (RUSAGE_SELF, &usage);
+  return static_cast<double> (usage.ru_maxrss) / 1024.0;
 }
 
 int
@@ -174,104 +186,104 @@ run (const Options& o, MPI_Comm comm)
   const StageObserver no_observer;
   detail::StageClock clock (stats, no_observer);
 
-  // Every rank reads the points and selects S alike; from here on it keeps only its tile's.
-  const apps::PointFile file = apps::readPointFile (o.input, o.weight_field, o.weights_column);
-  detail::InputPoints s = detail::selectInputPoints (file.points, file.weights);
-  if (s.positions.empty ())
+  // Each rank reads a share of the input; the points then go to the tiles they fall in.
+  const mpi::InputSource source{o.input, o.weight_field, o.weights_column};
+  mpi::InputShare share = mpi::readShare (comm, source);
+  const std::uint64_t points_input = share.total;
+  result.skipped = gatheredSorted (comm, share.skipped);
+  mpi::RoutedTile routed = mpi::routeToTiles (comm, std::move (share));
+  for (const auto& [dropped, kept] : gatheredSorted (comm, routed.duplicates))
+    result.duplicates.emplace_back (dropped, kept);
+  const std::uint64_t points_kept = mpi::sumOverRanks (comm, routed.points.own);
+  if (points_kept == 0)
     throw apps::FileError (o.input + ": no point with finite coordinates");
-  const mpi::TilePartition partition = mpi::partitionIntoTiles (s.positions, ranks);
-  mpi::TilePoints tile;
-  double w_max = 0;
-  for (std::uint32_t i = 0; i < s.positions.size (); ++i)
-  {
-    w_max = std::max (w_max, s.weights[i]);
-    if (partition.tile_of_point[i] == static_cast<std::uint32_t> (rank))
-      tile.points.push_back ({s.positions[i], s.weights[i], i, static_cast<std::uint32_t> (rank)});
-  }
-  tile.own = tile.points.size ();
+  mpi::TilePoints& tile = routed.points;
   clock.stageDone ("input");
 
   mpi::StarCompletionStatistics completion;
-  const detail::Triangulation triangulation = mpi::completeStars (comm, tile, partition.boxes, w_max, completion);
-  const int dimension = static_cast<int> (largestOverRanks (comm, triangulation.dimension));
-  if (dimension < 3)
-    throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +
-                              "): run pcl_wrap, which handles that, on one process");
-  std::vector<std::uint32_t> hidden;
-  for (std::uint32_t h : triangulation.hidden)
-    if (h < tile.own)
-      hidden.push_back (tile.points[h].index);
-  clock.stageDone ("triangulation");
-
-  const mpi::TileComplex part (tile, triangulation, static_cast<std::uint32_t> (rank));
-  const detail::PowerPredicates predicates (part.positions (), part.weights ());
-  const detail::Classification classification = detail::classify (part.complex (), predicates);
+  int dimension = -1;
+  std::vector<std::uint32_t> hidden; // own points with an empty power cell
+  std::unique_ptr<mpi::TileComplex> part;
+  {
+    detail::Triangulation triangulation = mpi::completeStars (comm, tile, routed.boxes, routed.w_max, completion);
+    dimension = static_cast<int> (largestOverRanks (comm, triangulation.dimension));
+    if (dimension < 3)
+      throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +
+                                "): run pcl_wrap, which handles that, on one process");
+    for (std::uint32_t h : triangulation.hidden)
+      if (h < tile.own)
+        hidden.push_back (tile.points[h].index);
+    clock.stageDone ("triangulation");
+    part = std::make_unique<mpi::TileComplex> (tile, triangulation, static_cast<std::uint32_t> (rank));
+  }
+  tile = {};
+  std::unique_ptr<detail::Classification> classification;
+  {
+    const detail::PowerPredicates predicates (part->positions (), part->weights ());
+    classification = std::make_unique<detail::Classification> (detail::classify (part->complex (), predicates));
+  }
   clock.stageDone ("classification");
 
-  detail::Subcomplex y (part.complex ());
-  mpi::DistributedRetraction retraction (comm, part, classification, y);
+  detail::Subcomplex y (part->complex (), part->releaseCofaceCounts ());
+  mpi::DistributedRetraction retraction (comm, *part, *classification, y);
   retraction.retract ();
   clock.stageDone ("retraction");
 
-  const mpi::TileWrap wrap = mpi::extractTileWrap (part, y);
+  const mpi::TileWrap wrap = mpi::extractTileWrap (*part, y, !o.complex_json.empty ());
   for (int k = 0; k <= 3; ++k)
-    result.complex[k] = gatheredX (comm, wrap.x[k], k, s);
-  result.w = gatheredW (comm, wrap, s);
+    if (!o.complex_json.empty ())
+      result.complex[k] = gatheredX (comm, wrap.x[k], k);
+  result.w = gatheredW (comm, wrap);
   result.surface.triangles = result.w.triangles;
-  result.hidden = mpi::gatherToRoot (comm, hidden);
-  for (auto& h : result.hidden)
-    h = s.input_index[h];
-  std::sort (result.hidden.begin (), result.hidden.end ()); // in input order, as one process lists them
+  result.hidden = gatheredSorted (comm, hidden); // in input order, as one process lists them
   clock.stageDone ("boundary");
 
   // Statistics: counts summed over the tiles, each simplex counted by the tile it belongs to.
   std::array<std::uint64_t, 12> classes{};
   for (int k = 0; k <= 3; ++k)
-    for (detail::SimplexId id = 0; id < part.complex ().size (k); ++id)
-      if (part.belongsHere ({k, id}))
-        ++classes[3 * k + static_cast<int> (classification.of ({k, id}))];
+    for (detail::SimplexId id = 0; id < part->complex ().size (k); ++id)
+      if (part->belongsHere ({k, id}))
+        ++classes[3 * k + static_cast<int> (classification->of ({k, id}))];
   for (int k = 0; k <= 3; ++k)
     for (int c = 0; c < 3; ++c)
       stats.simplices[k][c] = mpi::sumOverRanks (comm, classes[3 * k + c]);
-  stats.points_input = file.points.size ();
-  stats.points_skipped = s.skipped.size ();
-  stats.points_duplicate = s.duplicates.size ();
+  stats.points_input = points_input;
+  stats.points_skipped = result.skipped.size ();
+  stats.points_duplicate = result.duplicates.size ();
   stats.points_hidden = result.hidden.size ();
-  stats.points_used = s.positions.size () - mpi::sumOverRanks (comm, hidden.size ());
+  stats.points_used = points_kept - mpi::sumOverRanks (comm, hidden.size ());
   stats.triangulation_dimension = dimension;
   stats.collapses = mpi::sumOverRanks (comm, retraction.collapses ());
   for (int k = 0; k <= 3; ++k)
-    stats.x_simplices[k] = result.complex[k].size ();
+    stats.x_simplices[k] = mpi::sumOverRanks (comm, wrap.x_count[k]);
   stats.w_triangles = result.w.triangles.size ();
   stats.w_dangling_edges = result.w.dangling_edges.size ();
   stats.w_isolated_vertices = result.w.isolated_vertices.size ();
-  result.skipped = s.skipped;
-  result.duplicates = s.duplicates;
   // Each stage's time is the slowest rank's: the others wait for it at the next exchange.
   stats.total_seconds = 0;
   for (StageTiming& t : stats.timings)
     stats.total_seconds += t.seconds = largestOverRanks (comm, t.seconds);
 
-  rusage usage{};
-  getrusage (RUSAGE_SELF, &usage);
-  const double peak_mb = static_cast<double> (usage.ru_maxrss) / 1024.0;
-  const std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peak_mb});
+  std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peakMegabytes ()});
   const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);
   const std::size_t bytes = mpi::sumOverRanks (comm, completion.bytes_sent);
   const std::size_t removals = mpi::sumOverRanks (comm, retraction.removalsSent ());
   if (rank != 0)
     return 0;
 
-  apps::writeSurfaceMesh (o.output, file, result);
+  // Rank 0 writes the one mesh, over every input point (read again, now that the tile's work is
+  // done and freed).
+  apps::writeSurfaceMesh (o.output, source.readAll (), result);
   if (!o.complex_json.empty ())
     apps::writeAtomically (o.complex_json,
-                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, file.points.size ()); });
+                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, points_input); });
   if (!o.stats_json.empty ())
     apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
   if (o.stats)
   {
     apps::printSummary (std::cout, stats);
-    std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / s.positions.size ()
+    peaks[0] = peakMegabytes (); // with the mesh written
+    std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / points_kept
               << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent\n"
               << "retraction:    " << retraction.rounds () << " rounds, " << removals << " removals sent\n"
               << "peak memory:   ";

@@ -37,9 +37,12 @@ TileComplex::TileComplex (const TilePoints& tile, const detail::Triangulation& t
         weights_.push_back (r.weight);
         index_.push_back (r.index);
         tile_.push_back (r.tile);
-        vertex_of_index_.emplace (r.index, vertex_id[v[i]]);
       }
   }
+  vertex_of_index_.reserve (index_.size ());
+  for (std::uint32_t v = 0; v < index_.size (); ++v)
+    vertex_of_index_.emplace_back (index_[v], v);
+  std::sort (vertex_of_index_.begin (), vertex_of_index_.end ());
   detail::FilledInParallel<std::uint32_t> tetrahedra (4 * std::size_t (kept)), neighbours (4 * std::size_t (kept));
   for (std::size_t t = 0; t < count; ++t)
     if (kept_id[t] != NONE)
@@ -75,8 +78,9 @@ TileComplex::find (int dim, const std::uint32_t* indices) const
   std::uint32_t home = NONE_HOME;
   for (int i = 0; i <= dim; ++i)
   {
-    const auto found = vertex_of_index_.find (indices[i]);
-    if (found == vertex_of_index_.end ())
+    const auto found = std::lower_bound (vertex_of_index_.begin (), vertex_of_index_.end (),
+                                         std::make_pair (indices[i], std::uint32_t (0)));
+    if (found == vertex_of_index_.end () || found->first != indices[i])
       return {dim, NO_SIMPLEX};
     vertices[i] = found->second;
     if (tile_[vertices[i]] == rank_)

@@ -8,7 +8,7 @@
 #include "delaunay/tetrahedra.h"
 
 #include <cstdint>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::mpi
@@ -27,6 +27,11 @@ public:
   TileComplex (const TilePoints& tile, const detail::Triangulation& triangulation, std::uint32_t rank);
 
   const detail::SimplicialComplex& complex () const { return complex_; }
+  /** \brief Hands the complex's coface counts over to a subcomplex (SimplicialComplex). */
+  std::array<detail::FilledInParallel<std::uint32_t>, 3> releaseCofaceCounts ()
+  {
+    return complex_.releaseCofaceCounts ();
+  }
   const detail::Tetrahedra& tetrahedra () const { return tetrahedra_; }
   const std::vector<Point3>& positions () const { return positions_; }
   const std::vector<double>& weights () const { return weights_; }
@@ -47,7 +52,7 @@ private:
   std::vector<Point3> positions_;
   std::vector<double> weights_;
   std::vector<std::uint32_t> index_, tile_;
-  std::unordered_map<std::uint32_t, std::uint32_t> vertex_of_index_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> vertex_of_index_; // (index, vertex), sorted
   detail::SimplicialComplex complex_;
   detail::Tetrahedra tetrahedra_;
 };

@@ -3,57 +3,67 @@
 #include "tile_partition.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace pcl_wrap::mpi
 {
-namespace
-{
 
-/** Gives tiles first .. first + count - 1 the points ids[begin, end). */
-void
-bisect (const std::vector<Point3>& points, std::vector<std::uint32_t>& ids, std::size_t begin, std::size_t end,
-        std::uint32_t first, std::uint32_t count, TilePartition& out)
+TilePartition::TilePartition (std::vector<Point3> sample, int tiles)
 {
-  if (count == 1)
-  {
-    for (std::size_t i = begin; i < end; ++i)
-      out.tile_of_point[ids[i]] = first;
-    return;
-  }
-  Box box;
-  for (std::size_t i = begin; i < end; ++i)
-    box.add (points[ids[i]]);
-  int axis = 0;
-  if (!box.empty)
-    for (int c = 1; c < 3; ++c)
-      if (box.hi[c] - box.lo[c] > box.hi[axis] - box.lo[axis])
-        axis = c;
-  const std::uint32_t left = count / 2;
-  const std::size_t middle = begin + (end - begin) * left / count;
-  // Ties by index, so that the cut is the same whatever the order of ids.
-  std::nth_element (ids.begin () + begin, ids.begin () + middle, ids.begin () + end,
-                    [&] (std::uint32_t a, std::uint32_t b) {
-                      return points[a][axis] != points[b][axis] ? points[a][axis] < points[b][axis] : a < b;
-                    });
-  bisect (points, ids, begin, middle, first, left, out);
-  bisect (points, ids, middle, end, first + left, count - left, out);
+  build (sample, 0, sample.size (), 0, static_cast<std::uint32_t> (std::max (tiles, 1)));
 }
 
-} // namespace
-
-TilePartition
-partitionIntoTiles (const std::vector<Point3>& points, int tiles)
+std::uint32_t
+TilePartition::build (std::vector<Point3>& sample, std::size_t begin, std::size_t end, std::uint32_t first,
+                      std::uint32_t count)
 {
-  TilePartition out;
-  out.tile_of_point.assign (points.size (), 0);
-  out.boxes.assign (static_cast<std::size_t> (tiles), Box ());
-  std::vector<std::uint32_t> ids (points.size ());
-  std::iota (ids.begin (), ids.end (), 0u);
-  bisect (points, ids, 0, ids.size (), 0, static_cast<std::uint32_t> (tiles), out);
-  for (std::size_t i = 0; i < points.size (); ++i)
-    out.boxes[out.tile_of_point[i]].add (points[i]);
-  return out;
+  const auto at = static_cast<std::uint32_t> (cuts_.size ());
+  cuts_.emplace_back ();
+  if (count == 1)
+  {
+    cuts_[at].first = first;
+    return at;
+  }
+  Point3 lo{0, 0, 0}, hi{0, 0, 0};
+  for (std::size_t i = begin; i < end; ++i)
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = i == begin ? sample[i][c] : std::min (lo[c], sample[i][c]);
+      hi[c] = i == begin ? sample[i][c] : std::max (hi[c], sample[i][c]);
+    }
+  int axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (hi[c] - lo[c] > hi[axis] - lo[axis])
+      axis = c;
+  const std::uint32_t below = count / 2;
+  const std::size_t middle = begin + (end - begin) * below / count;
+  double cut = 0;
+  if (middle < end)
+  {
+    std::nth_element (sample.begin () + begin, sample.begin () + middle, sample.begin () + end,
+                      [&] (const Point3& a, const Point3& b) { return a[axis] < b[axis]; });
+    cut = sample[middle][axis];
+  }
+  // Points below the cut go below: the sample's [begin, middle) may hold some at the cut's
+  // coordinate; move those above, so that both halves are the points each side gets.
+  const auto split =
+      std::partition (sample.begin () + begin, sample.begin () + end, [&] (const Point3& p) { return p[axis] < cut; });
+  const auto mid = static_cast<std::size_t> (split - sample.begin ());
+  cuts_[at].axis = axis;
+  cuts_[at].at = cut;
+  const std::uint32_t b = build (sample, begin, mid, first, below);
+  const std::uint32_t a = build (sample, mid, end, first + below, count - below);
+  cuts_[at].below = b;
+  cuts_[at].above = a;
+  return at;
+}
+
+std::uint32_t
+TilePartition::tileOf (const Point3& p) const
+{
+  std::uint32_t at = 0;
+  while (cuts_[at].axis >= 0)
+    at = p[cuts_[at].axis] < cuts_[at].at ? cuts_[at].below : cuts_[at].above;
+  return cuts_[at].first;
 }
 
 } // namespace pcl_wrap::mpi

@@ -12,7 +12,7 @@ namespace pcl_wrap::mpi
 using detail::Simplex;
 
 TileWrap
-extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y)
+extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y, bool with_x)
 {
   const detail::SimplicialComplex& complex = tile.complex ();
   TileWrap out;
@@ -23,7 +23,8 @@ extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y)
       if (!y.contains (simplex) || !tile.belongsHere (simplex))
         continue;
       const std::uint32_t* v = complex.vertices (k, s);
-      for (int i = 0; i <= k; ++i)
+      ++out.x_count[k];
+      for (int i = 0; with_x && i <= k; ++i)
         out.x[k].push_back (tile.indexOf (v[i]));
       if (y.cofaceCount (simplex) != 0 || k == 3)
         continue;

@@ -16,7 +16,9 @@ namespace pcl_wrap::mpi
 /** \brief The simplices of X and W that belong to one tile, in indices of S. */
 struct TileWrap
 {
-  /** Per dimension, k + 1 indices per simplex of X (tetrahedra positively oriented). */
+  /** Per dimension, the number of simplices of X, and (when asked) k + 1 indices per simplex
+    * (tetrahedra positively oriented). */
+  std::array<std::size_t, 4> x_count{};
   std::array<std::vector<std::uint32_t>, 4> x;
   /** W's triangles with a tetrahedron of X behind them, facing away from it. */
   std::vector<std::array<std::uint32_t, 3>> faces;
@@ -27,8 +29,9 @@ struct TileWrap
   std::vector<std::uint32_t> isolated_vertices;
 };
 
-/** \brief What of X (the retracted \a y) and of W = Bd X belongs to this tile. */
+/** \brief What of X (the retracted \a y) and of W = Bd X belongs to this tile; X's simplices
+  * listed only \a with_x. */
 TileWrap
-extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y);
+extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y, bool with_x);
 
 } // namespace pcl_wrap::mpi

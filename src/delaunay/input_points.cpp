@@ -40,13 +40,7 @@ selectInputPoints (const std::vector<Point3>& points, const std::vector<double>&
 
   // Equal positions become neighbours; among them the largest weight, then the smallest index,
   // comes first and is the one kept. -0.0 == 0.0 here, as it is for the geometry.
-  tbb::parallel_sort (finite.begin (), finite.end (), [] (const Entry& a, const Entry& b) {
-    if (a.position != b.position)
-      return a.position < b.position;
-    if (a.weight != b.weight)
-      return a.weight > b.weight;
-    return a.index < b.index;
-  });
+  tbb::parallel_sort (finite.begin (), finite.end (), keptBefore<Entry>);
   std::vector<bool> is_kept (points.size (), false);
   std::size_t last_kept = 0;
   for (std::size_t k = 0; k < finite.size (); ++k)

@@ -24,6 +24,20 @@ struct InputPoints
   std::vector<std::pair<PointIndex, PointIndex>> duplicates;
 };
 
+/** \brief The order that puts points at one position next to each other, the one that is kept
+  * first: by position, then the largest weight, then the smallest index. For any record with
+  * \c position, \c weight and \c index. */
+template <class Record>
+bool
+keptBefore (const Record& a, const Record& b)
+{
+  if (a.position != b.position)
+    return a.position < b.position;
+  if (a.weight != b.weight)
+    return a.weight > b.weight;
+  return a.index < b.index;
+}
+
 /** \brief Drops non-finite points and keeps one of each set of points at the same position:
   * the one with the largest weight, ties broken by the smallest input index.
   * \param[in] weights empty (all zero) or one per point */
