@@ -167,11 +167,7 @@ TEST (WrapFiltration, SinksAreInExactOrderAndAnyPrefixIsThePrefixOfTheWholeOrder
 {
   // The torus's tube holds many sinks of size 0.4^2 up to rounding, the grid many of exactly equal
   // sizes, the weighted cube sinks of every dimension: the order cannot come from doubles.
-  std::vector<Point3> grid;
-  for (int x = 0; x < 5; ++x)
-    for (int y = 0; y < 5; ++y)
-      for (int z = 0; z < 4; ++z)
-        grid.push_back ({double (x), double (y), double (z)});
+  const std::vector<Point3> grid = gridSample (5, 5, 4);
   const auto cube = cubeSample (400, 3);
   std::vector<double> weights;
   for (std::size_t i = 0; i < cube.size (); ++i)

@@ -148,12 +148,7 @@ TEST (Mpi, WeightedPointsSomeHidden)
 
 TEST (Mpi, CosphericalGrid)
 {
-  std::vector<Point3> grid;
-  for (int i = 0; i < 11; ++i)
-    for (int j = 0; j < 11; ++j)
-      for (int k = 0; k < 11; ++k)
-        grid.push_back ({double (i), double (j), double (k)});
-  expectIdentical (writeCloud ("grid", grid));
+  expectIdentical (writeCloud ("grid", test::gridSample (11, 11, 11)));
 }
 
 TEST (Mpi, TileBorderThroughAGridPlane)

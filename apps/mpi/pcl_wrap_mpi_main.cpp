@@ -205,7 +205,8 @@ run (const Options& o, MPI_Comm comm)
   std::vector<std::uint32_t> hidden; // own points with an empty power cell
   std::unique_ptr<mpi::TileComplex> part;
   {
-    detail::Triangulation triangulation = mpi::completeStars (comm, tile, routed.boxes, routed.w_max, completion);
+    detail::Triangulation triangulation =
+        mpi::completeStars (comm, tile, routed.boxes, routed.w_max, routed.equal_weights, completion);
     dimension = static_cast<int> (largestOverRanks (comm, triangulation.dimension));
     if (dimension < 3)
       throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +

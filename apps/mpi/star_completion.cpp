@@ -38,7 +38,7 @@ private:
 } // namespace
 
 detail::Triangulation
-completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, double w_max,
+completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, double w_max, bool equal_weights,
                StarCompletionStatistics& statistics)
 {
   int ranks = 0, rank = 0;
@@ -48,17 +48,21 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
   for (const PointRecord& p : tile.points)
     held.insert (p.index);
   Outboxes outboxes (ranks);
+  // Each round inserts only what the last one brought.
+  detail::GrowingTriangulation growing (equal_weights);
+  std::vector<Point3> positions;
+  std::vector<double> weights;
   for (;;)
   {
     ++statistics.rounds;
-    std::vector<Point3> positions (tile.points.size ());
-    std::vector<double> weights (tile.points.size ());
-    for (std::size_t i = 0; i < tile.points.size (); ++i)
+    const std::size_t first = positions.size ();
+    for (std::size_t i = first; i < tile.points.size (); ++i)
     {
-      positions[i] = tile.points[i].position;
-      weights[i] = tile.points[i].weight;
+      positions.push_back (tile.points[i].position);
+      weights.push_back (tile.points[i].weight);
     }
-    detail::Triangulation triangulation = detail::triangulate (positions, weights);
+    growing.insert (positions, weights, first);
+    detail::Triangulation triangulation = growing.read (positions);
     const auto record = [&] (std::uint32_t vertex) -> const PointRecord& {
       return tile.points[triangulation.point_of_vertex[vertex]];
     };

@@ -7,6 +7,7 @@
 #include "delaunay/input_points.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace pcl_wrap::mpi
 {
@@ -41,16 +42,21 @@ routeToTiles (MPI_Comm comm, InputShare share)
   const TilePartition partition (allGather (comm, sample), ranks);
 
   std::vector<std::vector<PointRecord>> outboxes (ranks);
-  double w_max = 0;
+  // The largest weight, and the smallest as a largest negated.
+  double extremes[2] = {-std::numeric_limits<double>::infinity (), -std::numeric_limits<double>::infinity ()};
   for (PointRecord& p : share.points)
   {
     p.tile = partition.tileOf (p.position);
-    w_max = std::max (w_max, p.weight);
+    extremes[0] = std::max (extremes[0], p.weight);
+    extremes[1] = std::max (extremes[1], -p.weight);
     outboxes[p.tile].push_back (p);
   }
   share.points = {};
   RoutedTile out;
-  MPI_Allreduce (&w_max, &out.w_max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  double all[2];
+  MPI_Allreduce (extremes, all, 2, MPI_DOUBLE, MPI_MAX, comm);
+  out.w_max = std::max (all[0], 0.0);
+  out.equal_weights = all[0] == -all[1];
   std::vector<PointRecord> points = allToAll (comm, outboxes);
   outboxes = {};
 

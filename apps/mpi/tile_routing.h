@@ -23,7 +23,8 @@ struct RoutedTile
   /** (dropped duplicate, the point at the same position that stays), for this tile's points:
     * as for one process, the largest weight stays, then the smallest index. */
   std::vector<std::array<PointIndex, 2>> duplicates;
-  double w_max = 0; ///< the largest weight in S (at least 0)
+  double w_max = 0;          ///< the largest weight in S (at least 0)
+  bool equal_weights = true; ///< every point of S has the same weight
 };
 
 /** \brief The tiles of \a share's points: cuts from a sample of every rank's points (those whose

@@ -188,6 +188,70 @@ spanSpace (std::size_t n, const Point& point)
   return false;
 }
 
+/** Numbers the vertices of \a rt (whose infos are point indices) along a space-filling curve:
+  * neighbours in space are neighbours in every array indexed by vertex (and so by edge and
+  * triangle), which keeps the later stages in cache. The numbering depends only on the points,
+  * never on CGAL's internals. Fills \a t's dimension, point_of_vertex and hidden; returns the
+  * vertex id of each point (~0 for a hidden one). */
+template <class Cgal>
+std::vector<std::uint32_t>
+numberVertices (const Cgal& rt, const std::vector<Point3>& positions, Triangulation& t)
+{
+  t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
+  const std::vector<std::uint32_t> curve = zOrder (positions);
+  constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
+  std::vector<std::uint32_t> vertex_of_point (positions.size (), ABSENT);
+  for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
+    vertex_of_point[v->info ()] = 0;
+  for (std::uint32_t i : curve)
+    if (vertex_of_point[i] != ABSENT)
+    {
+      vertex_of_point[i] = static_cast<std::uint32_t> (t.point_of_vertex.size ());
+      t.point_of_vertex.push_back (i);
+    }
+  for (std::uint32_t i = 0; i < positions.size (); ++i)
+    if (vertex_of_point[i] == ABSENT)
+      t.hidden.push_back (i);
+  return vertex_of_point;
+}
+
+/** Reads \a rt's top simplices into \a t in vertex ids (\a id of a vertex handle), calling
+  * \a release once CGAL's cells are no longer needed. */
+template <class Cgal, class Id, class Release>
+void
+readTopSimplices (const Cgal& rt, const Id& id, Triangulation& t, const Release& release)
+{
+  auto& top = t.top_simplices;
+  switch (t.dimension)
+  {
+  case 3:
+  {
+    const CgalTetrahedra read = readTetrahedra (rt, id);
+    release ();
+    orderTetrahedra (read, t);
+    return;
+  }
+  case 2:
+    for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
+      for (int i = 0; i < 3; ++i)
+        top.push_back (id (f->first->vertex (i)));
+    break;
+  case 1:
+    for (auto e = rt.finite_edges_begin (); e != rt.finite_edges_end (); ++e)
+    {
+      top.push_back (id (e->first->vertex (e->second)));
+      top.push_back (id (e->first->vertex (e->third)));
+    }
+    break;
+  case 0:
+    top.push_back (0);
+    break;
+  default:
+    break;
+  }
+  release ();
+}
+
 /** The triangulation of the points by CGAL's \a Cgal, whose sites \a site makes from point
   * indices. */
 template <class Cgal, class Site>
@@ -233,73 +297,104 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site, const s
   rt.set_lock_data_structure (nullptr);
 
   Triangulation t;
-  t.dimension = rt.number_of_vertices () == 0 ? -1 : rt.dimension ();
-
-  // Vertex ids along a space-filling curve: neighbours in space are neighbours in every array
-  // indexed by vertex (and so by edge and triangle), which keeps the later stages in cache.
-  // The numbering depends only on the points, never on CGAL's internals.
-  const std::vector<std::uint32_t> curve = zOrder (positions);
-
-  constexpr std::uint32_t ABSENT = ~std::uint32_t (0);
-  std::vector<std::uint32_t> vertex_of_point (positions.size (), ABSENT);
-  for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
-    vertex_of_point[v->info ()] = 0;
-  for (std::uint32_t i : curve)
-    if (vertex_of_point[i] != ABSENT)
-    {
-      vertex_of_point[i] = static_cast<std::uint32_t> (t.point_of_vertex.size ());
-      t.point_of_vertex.push_back (i);
-    }
-  for (std::uint32_t i = 0; i < positions.size (); ++i)
-    if (vertex_of_point[i] == ABSENT)
-      t.hidden.push_back (i);
+  const std::vector<std::uint32_t> vertex_of_point = numberVertices (rt, positions, t);
   // From here on a vertex's info is its id (one indirection less per lookup).
   for (auto v = rt.finite_vertices_begin (); v != rt.finite_vertices_end (); ++v)
     v->info () = vertex_of_point[v->info ()];
-  const auto id = [] (typename Cgal::Vertex_handle v) { return v->info (); };
-
   // CGAL's triangulation is let go as soon as it has been read: ordering the tetrahedra takes
   // a few hundred megabytes more at a million points. Its parallel build allocates through TBB's
   // allocator, which keeps freed memory for reuse; that is given back too. (Only then: asked
   // before it ever allocated, the allocator crashes.)
-  const auto release = [&rt] {
-    rt.clear ();
-    if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
-      scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
-  };
-  auto& top = t.top_simplices;
-  switch (t.dimension)
-  {
-  case 3:
-  {
-    const CgalTetrahedra read = readTetrahedra (rt, id);
-    release ();
-    orderTetrahedra (read, t);
-    return t;
-  }
-  case 2:
-    for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
-      for (int i = 0; i < 3; ++i)
-        top.push_back (id (f->first->vertex (i)));
-    break;
-  case 1:
-    for (auto e = rt.finite_edges_begin (); e != rt.finite_edges_end (); ++e)
-    {
-      top.push_back (id (e->first->vertex (e->second)));
-      top.push_back (id (e->first->vertex (e->third)));
-    }
-    break;
-  case 0:
-    top.push_back (0);
-    break;
-  default:
-    break;
-  }
-  release ();
+  readTopSimplices (
+      rt, [] (typename Cgal::Vertex_handle v) { return v->info (); }, t,
+      [&rt] {
+        rt.clear ();
+        if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
+          scalable_allocation_command (TBBMALLOC_CLEAN_ALL_BUFFERS, nullptr);
+      });
   return t;
 }
 
+/** A triangulation kept between batches of points (GrowingTriangulation). */
+template <class Cgal>
+class Growing : public GrowingTriangulation::State
+{
+public:
+  void insert (const std::vector<Point3>& positions, const std::vector<double>& weights, std::size_t first) override
+  {
+    std::vector<std::pair<typename Cgal::Point, std::uint32_t>> input;
+    input.reserve (positions.size () - first);
+    CGAL::Bbox_3 box;
+    for (std::size_t i = first; i < positions.size (); ++i)
+    {
+      input.emplace_back (site (positions[i], weights[i]), static_cast<std::uint32_t> (i));
+      box += input.back ().first.bbox ();
+    }
+    // The lock grid spans the first batch; later points beyond it lock its border cells.
+    if constexpr (IS_PARALLEL<typename Cgal::Concurrency_tag>)
+      if (!locks_)
+      {
+        locks_.emplace (box, LOCK_GRID_CELLS);
+        rt_.set_lock_data_structure (&*locks_);
+      }
+    rt_.insert (input.begin (), input.end ()); // spatially sorted insertion
+  }
+
+  Triangulation read (const std::vector<Point3>& positions) const override
+  {
+    Triangulation t;
+    const std::vector<std::uint32_t> vertex_of_point = numberVertices (rt_, positions, t);
+    readTopSimplices (
+        rt_, [&] (typename Cgal::Vertex_handle v) { return vertex_of_point[v->info ()]; }, t, [] {});
+    return t;
+  }
+
+private:
+  static typename Cgal::Point site (const Point3& p, double w)
+  {
+    const BarePoint bare (p[0], p[1], p[2]);
+    if constexpr (std::is_same_v<typename Cgal::Point, WeightedPoint>)
+      return WeightedPoint (bare, w);
+    else
+      return bare;
+  }
+
+  std::optional<LockGrid> locks_; // declared before rt_, which points to it: destroyed after
+  Cgal rt_;
+};
+
 } // namespace
+
+GrowingTriangulation::GrowingTriangulation (bool equal_weights) : equal_weights_ (equal_weights) {}
+
+GrowingTriangulation::~GrowingTriangulation () = default;
+
+void
+GrowingTriangulation::insert (const std::vector<Point3>& positions, const std::vector<double>& weights,
+                              std::size_t first)
+{
+  if (!state_)
+  {
+    // Threads when the first batch is large enough for them, as in triangulate().
+    const bool parallel =
+        positions.size () - first >= PARALLEL_INSERTION_MIN_POINTS && tbb::this_task_arena::max_concurrency () > 1;
+    if (equal_weights_)
+      state_ = parallel ? std::unique_ptr<State> (new Growing<Delaunay<CGAL::Parallel_tag>> ())
+                        : std::unique_ptr<State> (new Growing<Delaunay<CGAL::Sequential_tag>> ());
+    else
+      state_ = parallel ? std::unique_ptr<State> (new Growing<Regular<CGAL::Parallel_tag>> ())
+                        : std::unique_ptr<State> (new Growing<Regular<CGAL::Sequential_tag>> ());
+  }
+  state_->insert (positions, weights, first);
+}
+
+Triangulation
+GrowingTriangulation::read (const std::vector<Point3>& positions) const
+{
+  if (!state_)
+    return {};
+  return state_->read (positions);
+}
 
 Triangulation
 triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights,

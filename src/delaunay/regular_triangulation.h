@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -39,5 +40,37 @@ constexpr std::uint32_t NO_NEIGHBOUR = ~std::uint32_t (0);
 Triangulation
 triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights,
              const std::function<void (double)>& progress = {});
+
+/** \brief A regular triangulation that points join in batches, read after each as triangulate()
+  * would give it for all the points so far (the same tetrahedra, vertex ids and order when they
+  * span space). For a process that learns its points in rounds: each batch costs its own
+  * insertions, not a new triangulation. */
+class GrowingTriangulation
+{
+public:
+  /** \param[in] equal_weights every point of every batch has the same weight (then the
+    *            triangulation is Delaunay's, built faster) */
+  explicit GrowingTriangulation (bool equal_weights);
+  ~GrowingTriangulation ();
+  GrowingTriangulation (const GrowingTriangulation&) = delete;
+  GrowingTriangulation& operator= (const GrowingTriangulation&) = delete;
+
+  /** \brief Inserts the distinct, finite points \a positions[first..] (point i keeps index i). */
+  void insert (const std::vector<Point3>& positions, const std::vector<double>& weights, std::size_t first);
+  /** \brief The triangulation of \a positions, every one of which was inserted. */
+  Triangulation read (const std::vector<Point3>& positions) const;
+
+  struct State
+  {
+    virtual ~State () = default;
+    virtual void insert (const std::vector<Point3>& positions, const std::vector<double>& weights,
+                         std::size_t first) = 0;
+    virtual Triangulation read (const std::vector<Point3>& positions) const = 0;
+  };
+
+private:
+  bool equal_weights_;
+  std::unique_ptr<State> state_; // made by the first insertion, which knows its size
+};
 
 } // namespace pcl_wrap::detail
