@@ -6,6 +6,7 @@
 #include "support/flow_checks.h"
 #include "support/naive_retraction.h"
 #include "support/pipeline.h"
+#include "support/degenerate_samples.h"
 #include "support/samplers.h"
 #include "support/topology.h"
 #include "support/wrap_checks.h"

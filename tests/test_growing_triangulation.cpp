@@ -3,6 +3,7 @@
 //
 // A triangulation grown in batches reads exactly as the one triangulation of all the points:
 // the same tetrahedra in the same order, the same neighbours, vertex ids and hidden points.
+#include "support/degenerate_samples.h"
 #include "support/samplers.h"
 
 #include "delaunay/regular_triangulation.h"

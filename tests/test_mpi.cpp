@@ -3,6 +3,7 @@
 //
 // pcl_wrap_mpi under a real mpirun, 1 to 4 ranks (and 8 on a cloud of 6 points), against the
 // single process: X and W identical, simplex by simplex, triangles with their orientation.
+#include "support/degenerate_samples.h"
 #include "support/samplers.h"
 
 #include "point_file.h"

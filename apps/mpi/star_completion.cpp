@@ -7,6 +7,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include <optional>
 #include <unordered_set>
 
 namespace pcl_wrap::mpi
@@ -78,8 +79,15 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
     else
     {
       const std::size_t count = triangulation.top_simplices.size () / 4;
-      // Per tetrahedron, the ranks its vertices go to; gathered on all threads, sent in order.
-      std::vector<std::vector<std::pair<std::uint32_t, int>>> found (count == 0 ? 0 : (count + 4095) / 4096);
+      // Per tetrahedron, the ranks it goes to and whether with all its vertices or only the
+      // own ones; gathered on all threads, sent in order.
+      struct Sending
+      {
+        std::uint32_t tetrahedron;
+        int rank;
+        bool all_vertices;
+      };
+      std::vector<std::vector<Sending>> found (count == 0 ? 0 : (count + 4095) / 4096);
       tbb::parallel_for (std::size_t (0), found.size (), [&] (std::size_t block) {
         for (std::size_t t = 4096 * block; t < std::min (count, 4096 * (block + 1)); ++t)
         {
@@ -94,17 +102,27 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
             p[i] = r.position;
             w[i] = r.weight;
           }
-          const TileReach ball = TileReach::ofTetrahedron (p, w, w_max);
+          std::optional<TileReach> ball;
           for (int s = 0; s < ranks; ++s)
           {
             if (s == rank)
               continue;
+            // On a point of tile s: s gets the point's neighbours here (its ball holds the point,
+            // so it meets s's box).
             bool has_theirs = false;
             for (int i = 0; i < 4; ++i)
               has_theirs |= record (v[i]).tile == static_cast<std::uint32_t> (s);
-            if (!has_own && !has_theirs)
+            if (has_theirs)
+            {
+              found[block].push_back ({static_cast<std::uint32_t> (t), s, true});
               continue;
-            bool meets = ball.mayMeet (boxes[s]);
+            }
+            if (!has_own)
+              continue;
+            // On own points only: s gets them if the tetrahedron may reach into s's box.
+            if (!ball)
+              ball = TileReach::ofTetrahedron (p, w, w_max);
+            bool meets = ball->mayMeet (boxes[s]);
             for (int i = 0; i < 4 && !meets; ++i) // hull facets: their half-spaces
               if (triangulation.neighbours[4 * t + i] == detail::NO_NEIGHBOUR)
               {
@@ -112,14 +130,18 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
                 meets = TileReach::ofHullFacet (facet, p[i]).mayMeet (boxes[s]);
               }
             if (meets)
-              found[block].push_back ({static_cast<std::uint32_t> (t), s});
+              found[block].push_back ({static_cast<std::uint32_t> (t), s, false});
           }
         }
       });
       for (const auto& block : found)
-        for (const auto& [t, s] : block)
+        for (const Sending& send : block)
           for (int i = 0; i < 4; ++i)
-            outboxes.send (s, record (triangulation.top_simplices[4 * std::size_t (t) + i]));
+          {
+            const PointRecord& r = record (triangulation.top_simplices[4 * std::size_t (send.tetrahedron) + i]);
+            if (send.all_vertices || r.tile == static_cast<std::uint32_t> (rank))
+              outboxes.send (send.rank, r);
+          }
     }
     const std::vector<std::vector<PointRecord>> sending = outboxes.take ();
     for (const auto& box : sending)

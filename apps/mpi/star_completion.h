@@ -41,14 +41,19 @@ struct StarCompletionStatistics
   * regular triangulation that has an own vertex is one of Del S; returns that triangulation.
   *
   * Each round every rank adds what it received to its triangulation (GrowingTriangulation) and
-  * sends, for each of its tetrahedra with a vertex of its own or of the receiver's tile, the
-  * tetrahedron's vertices to every other tile whose box its reach meets (TileReach). It stops when no rank receives a point it lacks. Why
-  * that suffices: if a tetrahedron t of rank r with own vertex v had a point q of tile s in its
-  * (symbolically perturbed) orthoball, t's reach meets s's box, so s holds t's vertices and q. In
-  * a regular triangulation the vertices inside any orthosphere are connected (they are the lower
-  * hull's vertices below a hyperplane after lifting), so s's triangulation has an edge from v to
-  * a vertex u inside t's orthoball. The tetrahedra on that edge reach v, in r's box, so s sends u
-  * to r; once r holds u, t is no longer in r's triangulation. A hull facet is the limit of a
+  * sends, for each of its tetrahedra:
+  * - with a vertex of tile s, all its vertices to s (s learns its points' neighbours here);
+  * - with an own vertex and none of tile s, its own vertices to s, if its reach may meet s's box
+  *   (TileReach).
+  * It stops when no rank receives a point it lacks. Why that suffices: let a tetrahedron t of rank
+  * r, with own vertex v, have a point q of tile s inside its (symbolically perturbed)
+  * orthosphere. t's reach meets s's box, so s holds v and q. After lifting, the points inside an
+  * orthosphere are those below a hyperplane; tilted about v's lift until t's other vertices are
+  * just above it, the hyperplane has below it v and the points strictly inside, and the vertices
+  * of a convex polytope on one side of a hyperplane are connected by its edges (here the edges
+  * of s's triangulation). So s's triangulation has an edge from v to
+  * a point u strictly inside t's orthosphere; s sends r the vertices of the tetrahedra on v, u
+  * among them, and once r holds u, t is not in r's triangulation. A hull facet is the limit of a
   * ball, with the same argument. \a w_max is the largest weight in S; \a equal_weights says
   * whether all of S's weights are equal. */
 detail::Triangulation

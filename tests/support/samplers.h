@@ -111,17 +111,4 @@ momentCurveSample (std::size_t n, unsigned seed)
   return p;
 }
 
-/** The points (x, y, z) of whole coordinates 0 <= x < nx, 0 <= y < ny, 0 <= z < nz: every cube of
-  * eight of them cospherical, the degenerate case of design.md §7. */
-inline std::vector<Point3>
-gridSample (int nx, int ny, int nz)
-{
-  std::vector<Point3> grid;
-  for (int x = 0; x < nx; ++x)
-    for (int y = 0; y < ny; ++y)
-      for (int z = 0; z < nz; ++z)
-        grid.push_back ({double (x), double (y), double (z)});
-  return grid;
-}
-
 } // namespace pcl_wrap::test
