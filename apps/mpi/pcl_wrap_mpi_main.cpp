@@ -268,6 +268,7 @@ run (const Options& o, MPI_Comm comm)
   std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peakMegabytes ()});
   const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);
   const std::size_t bytes = mpi::sumOverRanks (comm, completion.bytes_sent);
+  const std::size_t questions = mpi::sumOverRanks (comm, completion.questions);
   const std::size_t removals = mpi::sumOverRanks (comm, retraction.removalsSent ());
   if (rank != 0)
     return 0;
@@ -285,7 +286,8 @@ run (const Options& o, MPI_Comm comm)
     apps::printSummary (std::cout, stats);
     peaks[0] = peakMegabytes (); // with the mesh written
     std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / points_kept
-              << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent\n"
+              << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent, "
+              << questions << " tetrahedra asked about\n"
               << "retraction:    " << retraction.rounds () << " rounds, " << removals << " removals sent\n"
               << "peak memory:   ";
     for (std::size_t r = 0; r < peaks.size (); ++r)

@@ -33,7 +33,8 @@ struct TilePoints
 struct StarCompletionStatistics
 {
   int rounds = 0;
-  std::size_t ghosts = 0; ///< points received from other tiles
+  std::size_t ghosts = 0;    ///< points received from other tiles
+  std::size_t questions = 0; ///< tetrahedra asked about, per tile asked
   std::size_t bytes_sent = 0;
 };
 
@@ -43,11 +44,12 @@ struct StarCompletionStatistics
   * Each round every rank adds what it received to its triangulation (GrowingTriangulation) and
   * sends, for each of its tetrahedra:
   * - with a vertex of tile s, all its vertices to s (s learns its points' neighbours here);
-  * - with an own vertex and none of tile s, its own vertices to s, if its reach may meet s's box
-  *   (TileReach).
+  * - with an own vertex and none of tile s, whose reach (TileReach) may meet s's box: a question
+  *   to s, whether one of its points may be in that reach (TileSearch); if s says yes, the own
+  *   vertices go to s. A tetrahedron asks a tile once: the tile's own points do not change.
   * It stops when no rank receives a point it lacks. Why that suffices: let a tetrahedron t of rank
   * r, with own vertex v, have a point q of tile s inside its (symbolically perturbed)
-  * orthosphere. t's reach meets s's box, so s holds v and q. After lifting, the points inside an
+  * orthosphere. t's reach holds q, so s said yes and holds v and q. After lifting, the points inside an
   * orthosphere are those below a hyperplane; tilted about v's lift until t's other vertices are
   * just above it, the hyperplane has below it v and the points strictly inside, and the vertices
   * of a convex polytope on one side of a hyperplane are connected by its edges (here the edges
