@@ -4,6 +4,8 @@
 
 #include "message_exchange.h"
 
+#include "wrap/retraction.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -26,11 +28,7 @@ DistributedRetraction::DistributedRetraction (MPI_Comm comm, const TileComplex& 
 bool
 DistributedRetraction::collapsible (Simplex v) const
 {
-  if (classification_.of (v) != SimplexClass::equivocal || !y_.contains (v))
-    return false;
-  const Simplex tau = classification_.predecessor[v.dim][v.id];
-  return tau.id != NO_SIMPLEX && y_.contains (tau) && tile_.belongsHere (v) &&
-         y_.cofaceCount (v) == static_cast<std::uint32_t> (tau.dim - v.dim);
+  return detail::freePair (y_, classification_, v) && tile_.belongsHere (v);
 }
 
 void

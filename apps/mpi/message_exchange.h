@@ -53,19 +53,36 @@ sumOverRanks (MPI_Comm comm, std::uint64_t value)
   return sum;
 }
 
+/** \brief The largest \a value over all ranks. */
+inline double
+largestOverRanks (MPI_Comm comm, double value)
+{
+  double out = 0;
+  MPI_Allreduce (&value, &out, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return out;
+}
+
 /** \brief Every rank's \a local, concatenated in rank order, on rank 0 (empty elsewhere). */
 template <class T>
 std::vector<T>
 gatherToRoot (MPI_Comm comm, const std::vector<T>& local)
 {
   static_assert (std::is_trivially_copyable_v<T>);
-  int ranks = 0, rank = 0;
+  int ranks = 0;
   MPI_Comm_size (comm, &ranks);
-  MPI_Comm_rank (comm, &rank);
   std::vector<std::vector<T>> outboxes (ranks);
   outboxes[0] = local;
-  (void)rank;
   return allToAll (comm, outboxes);
+}
+
+/** \brief Every rank's \a local, concatenated in rank order, on every rank. */
+template <class T>
+std::vector<T>
+allGather (MPI_Comm comm, const std::vector<T>& local)
+{
+  int ranks = 0;
+  MPI_Comm_size (comm, &ranks);
+  return allToAll (comm, std::vector<std::vector<T>> (ranks, local));
 }
 
 } // namespace pcl_wrap::mpi

@@ -123,14 +123,6 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
   return true;
 }
 
-double
-largestOverRanks (MPI_Comm comm, double value)
-{
-  double out = 0;
-  MPI_Allreduce (&value, &out, 1, MPI_DOUBLE, MPI_MAX, comm);
-  return out;
-}
-
 /** The flat k-simplex lists of all ranks on rank 0, as a SimplexList of X. */
 SimplexList
 gatheredX (MPI_Comm comm, const std::vector<std::uint32_t>& local, int k)
@@ -207,7 +199,7 @@ run (const Options& o, MPI_Comm comm)
   {
     detail::Triangulation triangulation =
         mpi::completeStars (comm, tile, routed.boxes, routed.w_max, routed.equal_weights, completion);
-    dimension = static_cast<int> (largestOverRanks (comm, triangulation.dimension));
+    dimension = static_cast<int> (mpi::largestOverRanks (comm, triangulation.dimension));
     if (dimension < 3)
       throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +
                                 "): run pcl_wrap, which handles that, on one process");
@@ -263,7 +255,7 @@ run (const Options& o, MPI_Comm comm)
   // Each stage's time is the slowest rank's: the others wait for it at the next exchange.
   stats.total_seconds = 0;
   for (StageTiming& t : stats.timings)
-    stats.total_seconds += t.seconds = largestOverRanks (comm, t.seconds);
+    stats.total_seconds += t.seconds = mpi::largestOverRanks (comm, t.seconds);
 
   std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peakMegabytes ()});
   const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);

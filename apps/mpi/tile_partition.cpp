@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "tile_partition.h"
 
+#include "tile_reach.h"
+
 #include <algorithm>
 
 namespace pcl_wrap::mpi
@@ -23,17 +25,10 @@ TilePartition::build (std::vector<Point3>& sample, std::size_t begin, std::size_
     cuts_[at].first = first;
     return at;
   }
-  Point3 lo{0, 0, 0}, hi{0, 0, 0};
+  Box box;
   for (std::size_t i = begin; i < end; ++i)
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = i == begin ? sample[i][c] : std::min (lo[c], sample[i][c]);
-      hi[c] = i == begin ? sample[i][c] : std::max (hi[c], sample[i][c]);
-    }
-  int axis = 0;
-  for (int c = 1; c < 3; ++c)
-    if (hi[c] - lo[c] > hi[axis] - lo[axis])
-      axis = c;
+    box.add (sample[i]);
+  const int axis = box.longestAxis ();
   const std::uint32_t below = count / 2;
   const std::size_t middle = begin + (end - begin) * below / count;
   double cut = 0;

@@ -2,7 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "tile_reach.h"
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "delaunay/cgal_kernel.h"
+
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -13,9 +14,8 @@ namespace
 {
 
 using Interval = CGAL::Interval_nt<false>;
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-Kernel::Point_3
+detail::BarePoint
 bare (const Point3& p)
 {
   return {p[0], p[1], p[2]};
@@ -32,6 +32,16 @@ Box::add (const Point3& p)
     hi[c] = empty ? p[c] : std::max (hi[c], p[c]);
   }
   empty = false;
+}
+
+int
+Box::longestAxis () const
+{
+  int axis = 0;
+  for (int c = 1; c < 3; ++c)
+    if (hi[c] - lo[c] > hi[axis] - lo[axis])
+      axis = c;
+  return axis;
 }
 
 TileReach

@@ -16,6 +16,8 @@ struct Box
   bool empty = true;
 
   void add (const Point3& p);
+  /** \brief 0, 1 or 2: the axis of the box's longest side (the first of equal ones). */
+  int longestAxis () const;
 };
 
 /** \brief Where a tetrahedron of a tile's triangulation reaches: the closed ball of its orthosphere,

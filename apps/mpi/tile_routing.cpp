@@ -17,23 +17,13 @@ namespace
 /** Sample points per tile that the cuts are drawn from. */
 constexpr std::uint64_t SAMPLE_PER_TILE = 4096;
 
-template <class T>
-std::vector<T>
-allGather (MPI_Comm comm, const std::vector<T>& local)
-{
-  int ranks = 0;
-  MPI_Comm_size (comm, &ranks);
-  return allToAll (comm, std::vector<std::vector<T>> (ranks, local));
-}
-
 } // namespace
 
 RoutedTile
 routeToTiles (MPI_Comm comm, InputShare share)
 {
-  int ranks = 0, rank = 0;
+  int ranks = 0;
   MPI_Comm_size (comm, &ranks);
-  MPI_Comm_rank (comm, &rank);
   const std::uint64_t stride = std::max<std::uint64_t> (1, share.total / (SAMPLE_PER_TILE * ranks));
   std::vector<Point3> sample;
   for (const PointRecord& p : share.points)

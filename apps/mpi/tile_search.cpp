@@ -28,10 +28,7 @@ TileSearch::build (std::uint32_t begin, std::uint32_t end)
     nodes_[at].end = end;
     return at;
   }
-  int axis = 0;
-  for (int c = 1; c < 3; ++c)
-    if (box.hi[c] - box.lo[c] > box.hi[axis] - box.lo[axis])
-      axis = c;
+  const int axis = box.longestAxis ();
   const std::uint32_t middle = begin + (end - begin) / 2;
   std::nth_element (points_.begin () + begin, points_.begin () + middle, points_.begin () + end,
                     [axis] (const Point3& a, const Point3& b) { return a[axis] < b[axis]; });

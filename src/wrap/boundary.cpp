@@ -41,16 +41,16 @@ orientSheetTriangles (std::vector<Triangle>& triangles, const std::function<std:
     for (int c = 0; c < 3; ++c)
       keyed[i][c] = key (triangles[i][c]);
   });
-  const auto sorted = [&] (std::size_t i) {
-    Triangle k = keyed[i];
-    std::sort (k.begin (), k.end ());
-    return k;
-  };
+  std::vector<Triangle> ascending (n); // each triangle's keys, sorted once
+  parallelForEach (n, [&] (std::size_t i) {
+    ascending[i] = keyed[i];
+    std::sort (ascending[i].begin (), ascending[i].end ());
+  });
   std::vector<std::uint32_t> order (n);
   for (std::uint32_t i = 0; i < n; ++i)
     order[i] = i;
   tbb::parallel_sort (order.begin (), order.end (),
-                      [&] (std::uint32_t a, std::uint32_t b) { return sorted (a) < sorted (b); });
+                      [&] (std::uint32_t a, std::uint32_t b) { return ascending[a] < ascending[b]; });
   // (edge as its two keys ascending, rank of the triangle in order)
   std::vector<std::pair<std::uint64_t, std::uint32_t>> edge_uses (3 * n);
   parallelForEach (n, [&] (std::size_t r) {
@@ -88,7 +88,7 @@ orientSheetTriangles (std::vector<Triangle>& triangles, const std::function<std:
     if (done[root])
       continue;
     done[root] = 1;
-    keyed[order[root]] = sorted (order[root]);
+    keyed[order[root]] = ascending[order[root]];
     stack.push_back (root);
     while (!stack.empty ())
     {

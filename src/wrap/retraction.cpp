@@ -21,15 +21,7 @@ Retraction::Retraction (Subcomplex& y, const Classification& classification, Rem
 bool
 Retraction::collapsible (Simplex v) const
 {
-  const Simplex tau = classification_.predecessor[v.dim][v.id];
-  if (tau.id == NO_SIMPLEX || !y_.contains (v) || !y_.contains (tau) ||
-      classification_.of (v) != SimplexClass::equivocal)
-    return false;
-  // v is free with tau its largest coface iff every coface of v in Y is a face of tau. The k - l
-  // faces of tau one dimension above v are in Y (Y is a complex, tau is in it), and any other
-  // coface xi of v has a vertex q outside tau, so v + q is one more coface one dimension up.
-  // Counting those suffices.
-  return y_.cofaceCount (v) == static_cast<std::uint32_t> (tau.dim - v.dim);
+  return freePair (y_, classification_, v);
 }
 
 template <bool CONCURRENT>

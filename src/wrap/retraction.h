@@ -13,6 +13,20 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief Whether the pair of the flow (v, its predecessor tau) is free in \a y: both in Y, v
+  * equivocal, and every coface of v in Y a face of tau (docs/design.md §5). */
+inline bool
+freePair (const Subcomplex& y, const Classification& classification, Simplex v)
+{
+  const Simplex tau = classification.predecessor[v.dim][v.id];
+  if (tau.id == NO_SIMPLEX || !y.contains (v) || !y.contains (tau) || classification.of (v) != SimplexClass::equivocal)
+    return false;
+  // The k - l faces of tau one dimension above v are in Y (Y is a complex, tau is in it), and any
+  // other coface xi of v has a vertex q outside tau, so v + q is one more coface one dimension up.
+  // Counting those suffices.
+  return y.cofaceCount (v) == static_cast<std::uint32_t> (tau.dim - v.dim);
+}
+
 /** \brief The collapses along the flow that shrink a subcomplex Y, and the deletions of principal
   * simplices between them (docs/design.md §5-6).
   *
