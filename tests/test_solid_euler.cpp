@@ -47,6 +47,7 @@ TEST (SolidEuler, ChangeOfAMoveIsTheCountedChange)
     for (auto& label : inside)
       label = in (random);
     detail::SolidEulerChange change (p.tetrahedra, inside);
+    detail::SolidEulerChange::Scratch scratch;
     detail::Star star;
     for (int trial = 0; trial < 300; ++trial)
     {
@@ -68,7 +69,7 @@ TEST (SolidEuler, ChangeOfAMoveIsTheCountedChange)
             moved.push_back (u);
         }
       const int before = eulerCharacteristic (complex, inside);
-      const int predicted = change (moved);
+      const int predicted = change (moved, scratch);
       for (std::uint32_t t : moved)
       {
         inside[t] ^= 1u;

@@ -21,20 +21,6 @@ namespace pcl_wrap::detail
   * changedSide(). */
 class SolidEulerChange
 {
-public:
-  SolidEulerChange (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
-    : tetrahedra_ (tetrahedra), inside_ (inside)
-  {}
-
-  /** \brief The change of chi (S) if the tetrahedra \a moved (all on one side, distinct) changed
-    * side. */
-  int operator() (const std::vector<std::uint32_t>& moved);
-
-  /** \brief To be called after \a t changed side: keeps the count of inside tetrahedra at each
-    * vertex, which the first call of operator() makes, up to date. */
-  void changedSide (std::uint32_t t);
-
-private:
   /** A face of a moved tetrahedron: dimension, id, where it was seen, and whether it is in K. */
   struct Face
   {
@@ -47,15 +33,33 @@ private:
     bool operator<(const Face& o) const { return dim != o.dim ? dim < o.dim : id < o.id; }
   };
 
-  bool isMoved (std::uint32_t t) const;
-  /** Is some inside tetrahedron that is not moved a coface of \a face? */
-  bool onOtherInside (const Face& face);
+public:
+  /** \brief What one thread needs to weigh a move: reused from move to move. */
+  struct Scratch
+  {
+    std::vector<std::uint32_t> moved; // sorted
+    std::vector<Face> faces;
+  };
+
+  /** Counts the inside tetrahedra at each vertex. */
+  SolidEulerChange (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
+
+  /** \brief The change of chi (S) if the tetrahedra \a moved (all on one side, distinct) changed
+    * side. Reads the labels and counts only, so threads may weigh moves at once, each with its own
+    * \a scratch, while none changes a side. */
+  int operator() (const std::vector<std::uint32_t>& moved, Scratch& scratch) const;
+
+  /** \brief To be called after \a t changed side: keeps the count of inside tetrahedra at each
+    * vertex up to date. */
+  void changedSide (std::uint32_t t);
+
+private:
+  /** Is some inside tetrahedron that is not in \a moved a coface of \a face? */
+  bool onOtherInside (const Face& face, const std::vector<std::uint32_t>& moved) const;
 
   const Tetrahedra& tetrahedra_;
   const std::vector<std::uint8_t>& inside_;
-  std::vector<std::uint32_t> inside_at_vertex_; // per vertex; empty until first needed
-  std::vector<std::uint32_t> moved_;            // sorted
-  std::vector<Face> faces_;
+  std::vector<std::uint32_t> inside_at_vertex_; // per vertex
 };
 
 } // namespace pcl_wrap::detail

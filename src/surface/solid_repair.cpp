@@ -12,8 +12,11 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
 
 namespace pcl_wrap::detail
 {
@@ -28,7 +31,12 @@ struct StarScratch
   Star star;
   std::vector<std::uint32_t> edge_uses, id_of_root;
   UnionFind parts;
+  SolidEulerChange::Scratch euler;
 };
+
+/** The number of consecutive vertex ids that mend() gives one task: the ids follow a space-filling
+  * curve, so a block is a compact piece of space, and most stars lie within one block. */
+constexpr std::uint32_t MENDING_BLOCK = 1u << 14;
 
 /** The tetrahedra around one vertex (its star), or around one edge (its ring), and how they split
   * into connected parts on each side of the surface. */
@@ -40,8 +48,7 @@ public:
       complex_ (tetrahedra.complex ()),
       labels_ (labels),
       flipped_ (tetrahedra.size (), 0),
-      unmended_ (complex_.numVertices (), 0),
-      euler_change_ (tetrahedra, labels.inside)
+      unmended_ (complex_.numVertices (), 0)
   {
     if (!keep_buried)
       return;
@@ -64,24 +71,25 @@ public:
     // Most vertices need nothing: find the others on all threads, then mend them in order.
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
     std::vector<std::uint32_t> work;
-    for (std::uint32_t v = complex_.numVertices (); v-- > 0;)
+    for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
       if (needs[v] && !staysBuried (v)) // a volume's inside: nothing to do
-        work.push_back (v); // popped from the back: the lowest first
-    mend (work, done);
+        work.push_back (v);
+    mend (std::move (work), done);
     std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
     const std::vector<std::uint32_t> filled = fillUnsampledVoids (tetrahedra_, labels_, flipped_);
     joined.insert (joined.end (), filled.begin (), filled.end ());
-    for (std::uint32_t t : joined)
-      euler_change_.changedSide (t);
+    if (euler_change_)
+      for (std::uint32_t t : joined)
+        euler_change_->changedSide (t);
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : joined)
       for (int i = 0; i < 4; ++i)
         touched.push_back (complex_.vertex (3, t, i));
-    std::sort (touched.rbegin (), touched.rend ());
+    std::sort (touched.begin (), touched.end ());
     touched.erase (std::unique (touched.begin (), touched.end ()), touched.end ());
-    mend (touched, done);
+    mend (std::move (touched), done);
     for (std::uint32_t v = 0; v < unmended_.size (); ++v)
       if (unmended_[v])
         done.pinched.push_back (v);
@@ -120,37 +128,113 @@ private:
     return needs;
   }
 
-  /** Mends the vertices of \a work (popped from the back) and those of every tetrahedron moved. */
+  /** Mends the vertices of \a work (ascending) and those of every tetrahedron moved: the lowest
+    * first, then the vertices of each tetrahedron moved. On all threads, each block of
+    * MENDING_BLOCK consecutive ids mends those of its vertices whose star has vertices of the
+    * block only; then blocks shifted by half their length mend those left, and the rest are
+    * mended one by one. A vertex's mending reads the labels of its star, of the tetrahedra across
+    * its star's facets and around its star's edges, and the counts at its star's vertices, and
+    * moves tetrahedra of its star. Two vertices whose stars lie in different blocks are at least
+    * three edges apart, so neither reads what the other moves: the result depends on the labels
+    * alone, not on the threads. */
   void mend (std::vector<std::uint32_t> work, SolidRepair& done)
   {
+    if (work.empty ())
+      return;
+    if (!euler_change_)
+      euler_change_.emplace (tetrahedra_, labels_.inside);
     std::vector<std::uint8_t> queued (complex_.numVertices (), 0);
-    for (std::uint32_t v : work)
-      queued[v] = 1;
-    while (!work.empty ())
+    tbb::enumerable_thread_specific<StarScratch> scratches;
+    for (std::uint32_t shift : {0u, MENDING_BLOCK / 2})
+      work = mendInBlocks (work, shift, queued, scratches, done);
+    std::reverse (work.begin (), work.end ());
+    std::vector<std::uint32_t> none;
+    done.flipped += mendWithin (std::move (work), 0, complex_.numVertices (), queued, scratches.local (), none);
+  }
+
+  /** mendWithin() on all threads, in the blocks of MENDING_BLOCK ids that start at multiples of it
+    * plus \a shift; returns the vertices left, ascending. */
+  std::vector<std::uint32_t> mendInBlocks (const std::vector<std::uint32_t>& work, std::uint32_t shift,
+                                           std::vector<std::uint8_t>& queued,
+                                           tbb::enumerable_thread_specific<StarScratch>& scratches, SolidRepair& done)
+  {
+    const std::uint32_t n = complex_.numVertices ();
+    const std::size_t blocks = (std::size_t (n) + shift + MENDING_BLOCK - 1) / MENDING_BLOCK;
+    std::vector<std::vector<std::uint32_t>> left (blocks);
+    std::vector<std::size_t> moved (blocks, 0);
+    parallelForEach (
+        blocks,
+        [&] (std::size_t b) {
+          const std::size_t start = b * MENDING_BLOCK;
+          const auto lo = static_cast<std::uint32_t> (start < shift ? 0 : start - shift);
+          const auto hi = static_cast<std::uint32_t> (std::min<std::size_t> (n, start + MENDING_BLOCK - shift));
+          std::vector<std::uint32_t> stack (std::lower_bound (work.begin (), work.end (), lo),
+                                            std::lower_bound (work.begin (), work.end (), hi));
+          std::reverse (stack.begin (), stack.end ());
+          moved[b] = mendWithin (std::move (stack), lo, hi, queued, scratches.local (), left[b]);
+        },
+        1);
+    std::vector<std::uint32_t> rest;
+    for (std::size_t b = 0; b < blocks; ++b)
     {
-      const std::uint32_t v = work.back ();
-      work.pop_back ();
+      done.flipped += moved[b];
+      rest.insert (rest.end (), left[b].begin (), left[b].end ());
+    }
+    std::sort (rest.begin (), rest.end ());
+    rest.erase (std::unique (rest.begin (), rest.end ()), rest.end ());
+    return rest;
+  }
+
+  /** Mends the vertices of \a stack (popped from the back) and those of every tetrahedron moved,
+    * each whose star has vertices in [lo, hi) only; the others go to \a left. Returns the number
+    * of tetrahedra moved. */
+  std::size_t mendWithin (std::vector<std::uint32_t> stack, std::uint32_t lo, std::uint32_t hi,
+                          std::vector<std::uint8_t>& queued, StarScratch& s, std::vector<std::uint32_t>& left)
+  {
+    for (std::uint32_t v : stack)
+      queued[v] = 1;
+    std::size_t moved = 0;
+    while (!stack.empty ())
+    {
+      const std::uint32_t v = stack.back ();
+      stack.pop_back ();
       queued[v] = 0;
+      tetrahedra_.gatherStar (v, s.star);
+      if (!starWithin (s.star, lo, hi))
+      {
+        left.push_back (v);
+        continue;
+      }
       bool pinched = false;
-      const std::vector<std::uint32_t> flips = mendVertex (v, scratch_, pinched);
+      const std::vector<std::uint32_t> flips = mendVertex (s, pinched);
       unmended_[v] = flips.empty () && pinched;
       for (std::uint32_t t : flips)
       {
         labels_.inside[t] ^= 1u;
-        euler_change_.changedSide (t);
+        euler_change_->changedSide (t);
         flipped_[t] = 1;
-        ++done.flipped;
+        ++moved;
         for (int i = 0; i < 4; ++i)
         {
           const std::uint32_t u = complex_.vertex (3, t, i);
           if (!queued[u])
           {
             queued[u] = 1;
-            work.push_back (u);
+            stack.push_back (u);
           }
         }
       }
     }
+    return moved;
+  }
+
+  bool starWithin (const Star& star, std::uint32_t lo, std::uint32_t hi) const
+  {
+    for (std::uint32_t t : star.tetrahedra ())
+      for (int i = 0; i < 4; ++i)
+        if (tetrahedra_.vertex (t, i) < lo || tetrahedra_.vertex (t, i) >= hi)
+          return false;
+    return true;
   }
 
   /** Connected parts of the gathered tetrahedra: part[k] for star[k], count per side. */
@@ -243,7 +327,7 @@ private:
     * volume, whose solid is X's); NONE if none. A handle here is one the points do not show: two
     * sheets of the surface that touch get tied by a tube, where cutting them apart keeps the
     * solid's topology. */
-  std::uint32_t partToMove (const StarScratch& s, const Parts& parts)
+  std::uint32_t partToMove (StarScratch& s, const Parts& parts) const
   {
     std::vector<std::uint32_t> candidates;
     for (std::uint32_t p = 0; p < parts.side.size (); ++p)
@@ -251,19 +335,21 @@ private:
         candidates.push_back (p);
     std::stable_sort (candidates.begin (), candidates.end (),
                       [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
-    return firstMakingNoHandle (candidates, [&] (std::uint32_t p) { return members (s, parts, p); });
+    return firstMakingNoHandle (
+        candidates, [&] (std::uint32_t p) { return members (s, parts, p); }, s);
   }
 
   /** The first of \a candidates (weakest first) whose move, the tetrahedra \a moved gives, makes no
     * handle; the first of all when each makes one, when there is no other choice, or in a volume
     * (whose solid is X's); NONE if there is none. */
   template <class Moved>
-  std::uint32_t firstMakingNoHandle (const std::vector<std::uint32_t>& candidates, const Moved& moved)
+  std::uint32_t firstMakingNoHandle (const std::vector<std::uint32_t>& candidates, const Moved& moved,
+                                     StarScratch& s) const
   {
     if (candidates.empty ())
       return NONE;
     for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
-      if (euler_change_ (moved (candidates[k])) >= 0)
+      if ((*euler_change_) (moved (candidates[k]), s.euler) >= 0)
         return candidates[k];
     return candidates.front ();
   }
@@ -309,11 +395,12 @@ private:
     return NONE;
   }
 
-  /** The tetrahedra to move at v (empty: nothing to mend, or nothing allowed); \a pinched: the
-    * surface touches itself at v (a pinched edge, or more than one fan). */
-  std::vector<std::uint32_t> mendVertex (std::uint32_t v, StarScratch& s, bool& pinched)
+  /** The tetrahedra to move at the vertex whose star \a s holds (empty: nothing to mend, or
+    * nothing allowed); \a pinched: the surface touches itself there (a pinched edge, or more than
+    * one fan). */
+  std::vector<std::uint32_t> mendVertex (StarScratch& s, bool& pinched) const
   {
-    tetrahedra_.gatherStar (v, s.star);
+    const std::uint32_t v = s.star.vertex ();
     if (s.star.empty ())
       return {};
     // A pinched edge first: its ring's parts, joined only across facets that hold the edge.
@@ -358,8 +445,8 @@ private:
       std::sort (candidates.begin (), candidates.end (), [&] (std::uint32_t t, std::uint32_t u) {
         return labels_.margin[t] != labels_.margin[u] ? labels_.margin[t] < labels_.margin[u] : t < u;
       });
-      const std::uint32_t best =
-          firstMakingNoHandle (candidates, [] (std::uint32_t t) { return std::vector<std::uint32_t>{t}; });
+      const std::uint32_t best = firstMakingNoHandle (
+          candidates, [] (std::uint32_t t) { return std::vector<std::uint32_t>{t}; }, s);
       if (best != NONE)
         return {best};
       if (stays_buried_.empty ()) // not a volume
@@ -391,8 +478,7 @@ private:
   std::vector<std::uint8_t> stays_buried_; // per vertex, with keep_buried; else empty
   std::vector<std::uint8_t> flipped_;
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
-  StarScratch scratch_; // the sequential mending's
-  SolidEulerChange euler_change_;
+  std::optional<SolidEulerChange> euler_change_; // from the first mending on
 };
 
 } // namespace
