@@ -6,8 +6,10 @@
 #include "surface/solid_euler.h"
 #include "surface/solid_join.h"
 #include "surface/solid_voids.h"
+#include "surface/surface_handles.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
+#include "wrap/boundary.h"
 
 #include <algorithm>
 #include <array>
@@ -37,6 +39,10 @@ struct StarScratch
 /** The number of consecutive vertex ids that mend() gives one task: the ids follow a space-filling
   * curve, so a block is a compact piece of space, and most stars lie within one block. */
 constexpr std::uint32_t MENDING_BLOCK = 1u << 14;
+
+/** How many tetrahedra cutSmallHandles() searches for a way round a move, at most: enough for a
+  * handle a few spacings long, few enough to keep the search local. */
+constexpr std::uint32_t HANDLE_REACH = 4096;
 
 /** The tetrahedra around one vertex (its star), or around one edge (its ring), and how they split
   * into connected parts on each side of the surface. */
@@ -82,6 +88,11 @@ public:
     if (euler_change_)
       for (std::uint32_t t : joined)
         euler_change_->changedSide (t);
+    if (stays_buried_.empty ()) // not a volume, whose solid is X's
+    {
+      const std::vector<std::uint32_t> cut = cutSmallHandles ();
+      joined.insert (joined.end (), cut.begin (), cut.end ());
+    }
     done.flipped += joined.size ();
     std::vector<std::uint32_t> touched;
     for (std::uint32_t t : joined)
@@ -98,6 +109,147 @@ public:
 
 private:
   using LinkEdge = std::array<std::uint32_t, 2>;
+
+  /** Cuts the small handles of the solid's surface (verticesOnSmallHandles()): at each vertex
+    * near one, the weakest connected part of a star (of the vertex or of a vertex of its star)
+    * whose move changes the solid's Euler characteristic by +1 while the tetrahedra it leaves stay
+    * connected (within HANDLE_REACH tetrahedra) changes side. Such a move neither splits a part off
+    * nor opens or closes a void, so it takes one handle away and makes none: there are at most as
+    * many moves as handles. Returns the tetrahedra moved. */
+  std::vector<std::uint32_t> cutSmallHandles ()
+  {
+    const std::vector<std::uint32_t> near =
+        verticesOnSmallHandles (extractSolidBoundary (tetrahedra_, labels_.inside).triangles, complex_.numVertices ());
+    std::vector<std::uint32_t> moved;
+    if (near.empty ())
+      return moved;
+    if (!euler_change_)
+      euler_change_.emplace (tetrahedra_, labels_.inside);
+    StarScratch s;
+    std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
+    std::uint32_t search = 0;
+    struct Candidate
+    {
+      double weight;
+      std::vector<std::uint32_t> tetrahedra; // sorted
+    };
+    std::vector<Candidate> candidates;
+    std::vector<std::uint32_t> around;
+    std::vector<std::uint8_t> cut_near (complex_.numVertices (), 0); // a vertex of a moved tetrahedron
+    for (std::uint32_t v : near)
+    {
+      tetrahedra_.gatherStar (v, s.star);
+      around.clear ();
+      for (std::uint32_t t : s.star.tetrahedra ())
+        for (int i = 0; i < 4; ++i)
+          around.push_back (tetrahedra_.vertex (t, i));
+      std::sort (around.begin (), around.end ());
+      around.erase (std::unique (around.begin (), around.end ()), around.end ());
+      if (std::any_of (around.begin (), around.end (), [&] (std::uint32_t u) { return cut_near[u]; }))
+        continue; // the handle found there is cut
+      candidates.clear ();
+      for (std::uint32_t u : around)
+      {
+        tetrahedra_.gatherStar (u, s.star);
+        const Parts parts = split (s, [] (int) { return true; });
+        for (std::uint32_t p = 0; p < parts.side.size (); ++p)
+          if (parts.weight[p] < std::numeric_limits<double>::infinity ())
+          {
+            std::vector<std::uint32_t> members_of_p = members (s, parts, p);
+            std::sort (members_of_p.begin (), members_of_p.end ());
+            candidates.push_back ({parts.weight[p], std::move (members_of_p)});
+          }
+      }
+      std::sort (candidates.begin (), candidates.end (), [] (const Candidate& a, const Candidate& b) {
+        return a.weight != b.weight ? a.weight < b.weight : a.tetrahedra < b.tetrahedra;
+      });
+      for (const Candidate& c : candidates)
+      {
+        if ((*euler_change_) (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
+          continue;
+        for (std::uint32_t t : c.tetrahedra)
+          labels_.inside[t] ^= 1u;
+        if (!leavesManifold (c.tetrahedra, s))
+        {
+          for (std::uint32_t t : c.tetrahedra)
+            labels_.inside[t] ^= 1u;
+          continue;
+        }
+        for (std::uint32_t t : c.tetrahedra)
+        {
+          euler_change_->changedSide (t);
+          flipped_[t] = 1;
+          moved.push_back (t);
+          for (int i = 0; i < 4; ++i)
+            cut_near[tetrahedra_.vertex (t, i)] = 1;
+        }
+        break;
+      }
+    }
+    return moved;
+  }
+
+  /** Is the surface one fan at every vertex of the tetrahedra \a part, with no edge on more than
+    * two of its triangles? */
+  bool leavesManifold (const std::vector<std::uint32_t>& part, StarScratch& s) const
+  {
+    std::vector<std::uint32_t> vertices;
+    for (std::uint32_t t : part)
+      for (int i = 0; i < 4; ++i)
+        vertices.push_back (tetrahedra_.vertex (t, i));
+    std::sort (vertices.begin (), vertices.end ());
+    vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
+    for (std::uint32_t v : vertices)
+    {
+      tetrahedra_.gatherStar (v, s.star);
+      const Parts parts = split (s, [] (int) { return true; });
+      if (parts.count[0] + parts.count[1] > 2 || pinchedEdge (s) != NONE)
+        return false;
+    }
+    return true;
+  }
+
+  /** Do the tetrahedra across the facets of \a part (sorted, all on one side) on its side stay
+    * connected without it, through at most HANDLE_REACH tetrahedra of that side (and the space
+    * beyond the hull, for the outside)? \a reached: per tetrahedron, the last \a search to reach
+    * it. */
+  bool staysConnected (const std::vector<std::uint32_t>& part, std::vector<std::uint32_t>& reached,
+                       std::uint32_t search) const
+  {
+    const bool side = inside (part.front ());
+    const auto inPart = [&] (std::uint32_t t) { return std::binary_search (part.begin (), part.end (), t); };
+    std::vector<std::uint32_t> seeds;
+    bool hull_seed = false;
+    for (std::uint32_t t : part)
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t u = tetrahedra_.neighbour (t, i);
+        if (u == OUTSIDE_HULL)
+          hull_seed = hull_seed || !side;
+        else if (inside (u) == side && !inPart (u))
+          seeds.push_back (u);
+      }
+    if (seeds.empty ())
+      return hull_seed; // nothing of its side beside it but the space beyond the hull
+    std::vector<std::uint32_t> queue{seeds.front ()};
+    reached[seeds.front ()] = search;
+    bool hull_reached = false;
+    for (std::size_t k = 0; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t u = tetrahedra_.neighbour (queue[k], i);
+        if (u == OUTSIDE_HULL)
+          hull_reached = true;
+        else if (reached[u] != search && inside (u) == side && !inPart (u))
+        {
+          reached[u] = search;
+          queue.push_back (u);
+        }
+      }
+    if (hull_seed && !hull_reached)
+      return false;
+    return std::all_of (seeds.begin (), seeds.end (), [&] (std::uint32_t u) { return reached[u] == search; });
+  }
 
   /** Per vertex, whether mendVertex() may have something to do there: the vertex is off the
     * surface, or the surface's triangles around it do not make one fan. Found from the surface

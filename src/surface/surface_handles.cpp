@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "surface/surface_handles.h"
+
+#include "util/parallel_for_each.h"
+#include "util/union_find.h"
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace pcl_wrap::detail
+{
+namespace
+{
+
+using Triangle = std::array<std::uint32_t, 3>;
+using Edge = std::array<std::uint32_t, 2>;
+
+/** The triangles around each vertex: those of vertex v are triangle[begin[v] .. begin[v + 1]). */
+struct TrianglesAround
+{
+  std::vector<std::uint32_t> begin, triangle;
+
+  TrianglesAround (const std::vector<Triangle>& triangles, std::uint32_t n) : begin (std::size_t (n) + 1, 0)
+  {
+    for (const Triangle& t : triangles)
+      for (std::uint32_t v : t)
+        ++begin[v + 1];
+    for (std::uint32_t v = 0; v < n; ++v)
+      begin[v + 1] += begin[v];
+    triangle.resize (begin[n]);
+    std::vector<std::uint32_t> at (begin.begin (), begin.end () - 1);
+    for (std::uint32_t t = 0; t < triangles.size (); ++t)
+      for (std::uint32_t v : triangles[t])
+        triangle[at[v]++] = t;
+  }
+};
+
+/** Per triangle and edge (from its vertex i to the next), the opposite vertex of the other
+  * triangle on that edge; found on all threads among the triangles around the edge's first vertex. */
+std::vector<std::array<std::uint32_t, 3>>
+oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround& around)
+{
+  std::vector<std::array<std::uint32_t, 3>> opposite (triangles.size ());
+  parallelForEach (triangles.size (), [&] (std::size_t t) {
+    for (int i = 0; i < 3; ++i)
+    {
+      const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+      opposite[t][i] = a; // none: the edge is on one triangle
+      for (std::uint32_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
+      {
+        const Triangle& u = triangles[around.triangle[k]];
+        if (around.triangle[k] == t)
+          continue;
+        for (int j = 0; j < 3; ++j)
+          if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
+            opposite[t][i] = u[(j + 2) % 3];
+      }
+    }
+  });
+  return opposite;
+}
+
+/** One thread's marks and lists, reused from vertex to vertex. */
+struct PatchScratch
+{
+  std::vector<std::uint32_t> in_patch, seen; // per vertex: the stamp of the last patch (search) to reach it
+  std::uint32_t stamp = 0;
+  std::vector<std::uint32_t> vertices, front, next;
+  std::vector<Edge> edges;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_of; // boundary vertex, its loop
+  UnionFind loops;
+};
+
+/** The patches of a closed surface around its vertices, and what their topology says. */
+class HandleFinder
+{
+public:
+  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n)
+    : triangles_ (triangles), around_ (triangles, n), opposite_ (oppositeVertices (triangles, around_)), n_ (n)
+  {}
+
+  /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube? */
+  bool onSmallHandle (std::uint32_t v, PatchScratch& s) const
+  {
+    if (s.in_patch.empty ())
+    {
+      s.in_patch.assign (n_, 0);
+      s.seen.assign (n_, 0);
+    }
+    const std::uint32_t stamp = ++s.stamp;
+    // The rings: every vertex of a triangle around a vertex of the ring before.
+    s.vertices.assign (1, v);
+    s.in_patch[v] = stamp;
+    s.front.assign (1, v);
+    for (int ring = 0; ring < HANDLE_RINGS; ++ring)
+    {
+      s.next.clear ();
+      for (std::uint32_t u : s.front)
+        forNeighbours (u, [&] (std::uint32_t w) {
+          if (s.in_patch[w] != stamp)
+          {
+            s.in_patch[w] = stamp;
+            s.vertices.push_back (w);
+            s.next.push_back (w);
+          }
+        });
+      s.front.swap (s.next);
+    }
+    // The patch's triangles (those with three vertices in it) and its boundary edges (on one of
+    // them): V - E + F with E = (3 F + boundary) / 2.
+    long faces = 0, boundary = 0;
+    s.edges.clear ();
+    for (std::uint32_t u : s.vertices)
+      for (std::uint32_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+      {
+        const Triangle& t = triangles_[around_.triangle[k]];
+        if (u != std::min ({t[0], t[1], t[2]}) || s.in_patch[t[0]] != stamp || s.in_patch[t[1]] != stamp ||
+            s.in_patch[t[2]] != stamp)
+          continue;
+        ++faces;
+        for (int i = 0; i < 3; ++i)
+        {
+          const std::uint32_t d = opposite_[around_.triangle[k]][i];
+          if (d == t[i] || s.in_patch[d] != stamp)
+          {
+            ++boundary;
+            s.edges.push_back ({t[i], t[(i + 1) % 3]});
+          }
+        }
+      }
+    const long chi = long (s.vertices.size ()) - (3 * faces + boundary) / 2 + faces;
+    if (chi >= 1)
+      return false; // a disc (or a whole small sphere)
+    // Its boundary loops.
+    s.loop_of.clear ();
+    for (const Edge& e : s.edges)
+      for (std::uint32_t w : e)
+        s.loop_of.push_back ({w, 0});
+    std::sort (s.loop_of.begin (), s.loop_of.end ());
+    s.loop_of.erase (std::unique (s.loop_of.begin (), s.loop_of.end ()), s.loop_of.end ());
+    const auto local = [&] (std::uint32_t w) {
+      return static_cast<std::uint32_t> (
+          std::lower_bound (s.loop_of.begin (), s.loop_of.end (), std::make_pair (w, 0u)) - s.loop_of.begin ());
+    };
+    s.loops.reset (s.loop_of.size ());
+    for (const Edge& e : s.edges)
+    {
+      const std::uint32_t p = s.loops.find (local (e[0])), q = s.loops.find (local (e[1]));
+      if (p != q)
+        s.loops.attach (p, q);
+    }
+    long loops = 0;
+    for (std::uint32_t i = 0; i < s.loop_of.size (); ++i)
+    {
+      s.loop_of[i].second = s.loops.find (i);
+      loops += s.loop_of[i].second == i;
+    }
+    if (2 - chi - loops >= 2)
+      return true; // the patch has a genus of its own
+    return loops >= 2 && loopsJoinNear (s, stamp, local);
+  }
+
+  /** Keeps, of the vertices flagged in \a look, those of a maximal independent set, taken in
+    * the order of the ids: every flagged vertex is kept or next to one that is. */
+  void keepCentres (std::vector<std::uint8_t>& look) const
+  {
+    for (std::uint32_t v = 0; v < n_; ++v)
+      if (look[v] == 1)
+        forNeighbours (v, [&] (std::uint32_t w) {
+          if (w > v && look[w] == 1)
+            look[w] = 2; // next to a centre
+        });
+    for (auto& flag : look)
+      flag = flag == 1;
+  }
+
+private:
+  template <class F>
+  void forNeighbours (std::uint32_t u, const F& f) const
+  {
+    for (std::uint32_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+      for (std::uint32_t w : triangles_[around_.triangle[k]])
+        if (w != u)
+          f (w);
+  }
+
+  /** Does a path off the patch, within 2 HANDLE_RINGS rings, join its first boundary loop to
+    * another? */
+  template <class Local>
+  bool loopsJoinNear (PatchScratch& s, std::uint32_t stamp, const Local& local) const
+  {
+    const std::uint32_t first = s.loop_of.front ().second;
+    s.front.clear ();
+    for (const auto& [w, loop] : s.loop_of)
+      if (loop == first)
+      {
+        s.front.push_back (w);
+        s.seen[w] = stamp;
+      }
+    bool joined = false;
+    for (int ring = 0; ring < 2 * HANDLE_RINGS && !joined && !s.front.empty (); ++ring)
+    {
+      s.next.clear ();
+      for (std::uint32_t u : s.front)
+        forNeighbours (u, [&] (std::uint32_t w) {
+          if (s.seen[w] == stamp)
+            return;
+          if (s.in_patch[w] != stamp)
+          {
+            s.seen[w] = stamp;
+            s.next.push_back (w);
+          }
+          else if (s.in_patch[u] != stamp) // from off the patch onto its boundary
+          {
+            const std::uint32_t i = local (w);
+            joined = joined || (i < s.loop_of.size () && s.loop_of[i].first == w && s.loop_of[i].second != first);
+          }
+        });
+      s.front.swap (s.next);
+    }
+    return joined;
+  }
+
+  const std::vector<Triangle>& triangles_;
+  const TrianglesAround around_;
+  const std::vector<std::array<std::uint32_t, 3>> opposite_;
+  const std::uint32_t n_;
+};
+
+} // namespace
+
+std::vector<std::uint32_t>
+verticesOnSmallHandles (const std::vector<Triangle>& triangles, std::uint32_t num_vertices)
+{
+  // The genus of each connected part, from V - E + F with E = 3F / 2.
+  UnionFind parts (num_vertices);
+  for (const Triangle& t : triangles)
+    for (int i = 1; i < 3; ++i)
+    {
+      const std::uint32_t p = parts.find (t[0]), q = parts.find (t[i]);
+      if (p != q)
+        parts.attach (p, q);
+    }
+  std::vector<long> faces (num_vertices, 0), vertices (num_vertices, 0);
+  for (const Triangle& t : triangles)
+    ++faces[parts.find (t[0])];
+  std::vector<std::uint8_t> on (num_vertices, 0);
+  for (const Triangle& t : triangles)
+    for (std::uint32_t v : t)
+      on[v] = 1;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+    vertices[parts.find (v)] += on[v];
+  std::vector<std::uint8_t> look (num_vertices, 0);
+  bool any = false;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+  {
+    const std::uint32_t p = parts.find (v);
+    // A closed surface of genus g: V - F / 2 = 2 - 2g.
+    look[v] = on[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
+    any = any || look[v];
+  }
+  if (!any)
+    return {};
+  const HandleFinder finder (triangles, num_vertices);
+  finder.keepCentres (look);
+  tbb::enumerable_thread_specific<PatchScratch> scratches;
+  std::vector<std::uint8_t> found (num_vertices, 0);
+  parallelForEach (
+      num_vertices,
+      [&] (std::size_t v) {
+        if (look[v])
+          found[v] = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratches.local ());
+      },
+      256);
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+    if (found[v])
+      out.push_back (v);
+  return out;
+}
+
+} // namespace pcl_wrap::detail

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
+  * a few rings of triangles around the vertex go round.
+  *
+  * Only the connected parts of the surface whose genus (from the Euler characteristic, V - F / 2
+  * for a closed surface) is above zero are looked at, around the centres of a maximal independent
+  * set of their vertices (each vertex is one or next to one). Around a centre, the triangles
+  * within HANDLE_RINGS rings make a patch; it is a disc where the surface has no small handle. Where
+  * it is not, it holds a handle (its own genus is above zero), or it goes round a thin tube: a
+  * handle's when the rest of the surface joins the patch's boundary loops near the patch (within
+  * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off.
+  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
+  * \return ascending vertex ids */
+std::vector<std::uint32_t>
+verticesOnSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
+
+/** \brief How many rings of triangles around a vertex verticesOnSmallHandles() looks at. */
+constexpr int HANDLE_RINGS = 4;
+
+} // namespace pcl_wrap::detail
