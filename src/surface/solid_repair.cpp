@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -110,12 +111,14 @@ public:
 private:
   using LinkEdge = std::array<std::uint32_t, 2>;
 
-  /** Cuts the small handles of the solid's surface (verticesOnSmallHandles()): at each vertex
-    * near one, the weakest connected part of a star (of the vertex or of a vertex of its star)
-    * whose move changes the solid's Euler characteristic by +1 while the tetrahedra it leaves stay
-    * connected (within HANDLE_REACH tetrahedra) changes side. Such a move neither splits a part off
-    * nor opens or closes a void, so it takes one handle away and makes none: there are at most as
-    * many moves as handles. Returns the tetrahedra moved. */
+  /** Cuts the small handles of the solid's surface (verticesOnSmallHandles()). The candidates
+    * are the connected parts of the stars of the vertices near one and of their stars' vertices
+    * whose move changes the solid's Euler characteristic by +1, found on all threads. Weakest
+    * first, a candidate changes side if it still does that, the tetrahedra it leaves on its side
+    * stay connected (within HANDLE_REACH tetrahedra), and the surface stays a 2-manifold at its
+    * vertices. Such a move neither splits a part off nor opens or closes a void, so it takes one
+    * handle away and makes none: there are at most as many moves as handles. Returns the
+    * tetrahedra moved. */
   std::vector<std::uint32_t> cutSmallHandles ()
   {
     const std::vector<std::uint32_t> near =
@@ -126,64 +129,68 @@ private:
     if (!euler_change_)
       euler_change_.emplace (tetrahedra_, labels_.inside);
     StarScratch s;
-    std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
-    std::uint32_t search = 0;
+    std::vector<std::uint32_t> around;
+    for (std::uint32_t v : near)
+    {
+      tetrahedra_.gatherStar (v, s.star);
+      for (std::uint32_t t : s.star.tetrahedra ())
+        for (int i = 0; i < 4; ++i)
+          around.push_back (tetrahedra_.vertex (t, i));
+    }
+    std::sort (around.begin (), around.end ());
+    around.erase (std::unique (around.begin (), around.end ()), around.end ());
     struct Candidate
     {
       double weight;
       std::vector<std::uint32_t> tetrahedra; // sorted
-    };
-    std::vector<Candidate> candidates;
-    std::vector<std::uint32_t> around;
-    std::vector<std::uint8_t> cut_near (complex_.numVertices (), 0); // a vertex of a moved tetrahedron
-    for (std::uint32_t v : near)
-    {
-      tetrahedra_.gatherStar (v, s.star);
-      around.clear ();
-      for (std::uint32_t t : s.star.tetrahedra ())
-        for (int i = 0; i < 4; ++i)
-          around.push_back (tetrahedra_.vertex (t, i));
-      std::sort (around.begin (), around.end ());
-      around.erase (std::unique (around.begin (), around.end ()), around.end ());
-      if (std::any_of (around.begin (), around.end (), [&] (std::uint32_t u) { return cut_near[u]; }))
-        continue; // the handle found there is cut
-      candidates.clear ();
-      for (std::uint32_t u : around)
+      bool operator<(const Candidate& o) const
       {
-        tetrahedra_.gatherStar (u, s.star);
-        const Parts parts = split (s, [] (int) { return true; });
-        for (std::uint32_t p = 0; p < parts.side.size (); ++p)
-          if (parts.weight[p] < std::numeric_limits<double>::infinity ())
-          {
-            std::vector<std::uint32_t> members_of_p = members (s, parts, p);
-            std::sort (members_of_p.begin (), members_of_p.end ());
-            candidates.push_back ({parts.weight[p], std::move (members_of_p)});
-          }
+        return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
       }
-      std::sort (candidates.begin (), candidates.end (), [] (const Candidate& a, const Candidate& b) {
-        return a.weight != b.weight ? a.weight < b.weight : a.tetrahedra < b.tetrahedra;
-      });
-      for (const Candidate& c : candidates)
+    };
+    tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<Candidate>>> found;
+    parallelForEach (
+        around.size (),
+        [&] (std::size_t k) {
+          auto& [scratch, candidates] = found.local ();
+          tetrahedra_.gatherStar (around[k], scratch.star);
+          const Parts parts = split (scratch, [] (int) { return true; });
+          for (std::uint32_t p = 0; p < parts.side.size (); ++p)
+            if (parts.weight[p] < std::numeric_limits<double>::infinity ())
+            {
+              std::vector<std::uint32_t> part = members (scratch, parts, p);
+              std::sort (part.begin (), part.end ());
+              if ((*euler_change_) (part, scratch.euler) == 1)
+                candidates.push_back ({parts.weight[p], std::move (part)});
+            }
+        },
+        16);
+    std::vector<Candidate> candidates;
+    for (auto& [scratch, list] : found)
+      std::move (list.begin (), list.end (), std::back_inserter (candidates));
+    std::sort (candidates.begin (), candidates.end ());
+    std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
+    std::uint32_t search = 0;
+    for (const Candidate& c : candidates)
+    {
+      const bool side = inside (c.tetrahedra.front ());
+      if (std::any_of (c.tetrahedra.begin (), c.tetrahedra.end (),
+                       [&] (std::uint32_t t) { return inside (t) != side; }) ||
+          (*euler_change_) (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
+        continue; // moved in part, or its handle is cut
+      for (std::uint32_t t : c.tetrahedra)
+        labels_.inside[t] ^= 1u;
+      if (!leavesManifold (c.tetrahedra, s))
       {
-        if ((*euler_change_) (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
-          continue;
         for (std::uint32_t t : c.tetrahedra)
           labels_.inside[t] ^= 1u;
-        if (!leavesManifold (c.tetrahedra, s))
-        {
-          for (std::uint32_t t : c.tetrahedra)
-            labels_.inside[t] ^= 1u;
-          continue;
-        }
-        for (std::uint32_t t : c.tetrahedra)
-        {
-          euler_change_->changedSide (t);
-          flipped_[t] = 1;
-          moved.push_back (t);
-          for (int i = 0; i < 4; ++i)
-            cut_near[tetrahedra_.vertex (t, i)] = 1;
-        }
-        break;
+        continue;
+      }
+      for (std::uint32_t t : c.tetrahedra)
+      {
+        euler_change_->changedSide (t);
+        flipped_[t] = 1;
+        moved.push_back (t);
       }
     }
     return moved;

@@ -25,6 +25,6 @@ std::vector<std::uint32_t>
 verticesOnSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
 
 /** \brief How many rings of triangles around a vertex verticesOnSmallHandles() looks at. */
-constexpr int HANDLE_RINGS = 4;
+constexpr int HANDLE_RINGS = 3;
 
 } // namespace pcl_wrap::detail
