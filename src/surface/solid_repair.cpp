@@ -290,12 +290,12 @@ private:
   /** Mends the vertices of \a work (ascending) and those of every tetrahedron moved: the lowest
     * first, then the vertices of each tetrahedron moved. On all threads, each block of
     * MENDING_BLOCK consecutive ids mends those of its vertices whose star has vertices of the
-    * block only; then blocks shifted by half their length mend those left, and the rest are
-    * mended one by one. A vertex's mending reads the labels of its star, of the tetrahedra across
-    * its star's facets and around its star's edges, and the counts at its star's vertices, and
-    * moves tetrahedra of its star. Two vertices whose stars lie in different blocks are at least
-    * three edges apart, so neither reads what the other moves: the result depends on the labels
-    * alone, not on the threads. */
+    * block only; then blocks shifted by half their length, and blocks sixteen times longer, mend
+    * those left, and the rest are mended one by one. A vertex's mending reads the labels of its
+    * star, of the tetrahedra across its star's facets and around its star's edges, and the counts
+    * at its star's vertices, and moves tetrahedra of its star. Two vertices whose stars lie in
+    * different blocks are at least three edges apart, so neither reads what the other moves: the
+    * result depends on the labels alone, not on the threads. */
   void mend (std::vector<std::uint32_t> work, SolidRepair& done)
   {
     if (work.empty ())
@@ -304,29 +304,33 @@ private:
       euler_change_.emplace (tetrahedra_, labels_.inside);
     std::vector<std::uint8_t> queued (complex_.numVertices (), 0);
     tbb::enumerable_thread_specific<StarScratch> scratches;
-    for (std::uint32_t shift : {0u, MENDING_BLOCK / 2})
-      work = mendInBlocks (work, shift, queued, scratches, done);
+    // Blocks, then blocks shifted by half their length, then both again sixteen times longer.
+    for (const auto& [length, shift] : {std::pair{MENDING_BLOCK, 0u},
+                                        {MENDING_BLOCK, MENDING_BLOCK / 2},
+                                        {16 * MENDING_BLOCK, 0u},
+                                        {16 * MENDING_BLOCK, 8 * MENDING_BLOCK}})
+      work = mendInBlocks (work, length, shift, queued, scratches, done);
     std::reverse (work.begin (), work.end ());
     std::vector<std::uint32_t> none;
     done.flipped += mendWithin (std::move (work), 0, complex_.numVertices (), queued, scratches.local (), none);
   }
 
-  /** mendWithin() on all threads, in the blocks of MENDING_BLOCK ids that start at multiples of it
+  /** mendWithin() on all threads, in the blocks of \a length ids that start at multiples of it
     * plus \a shift; returns the vertices left, ascending. */
-  std::vector<std::uint32_t> mendInBlocks (const std::vector<std::uint32_t>& work, std::uint32_t shift,
-                                           std::vector<std::uint8_t>& queued,
+  std::vector<std::uint32_t> mendInBlocks (const std::vector<std::uint32_t>& work, std::uint32_t length,
+                                           std::uint32_t shift, std::vector<std::uint8_t>& queued,
                                            tbb::enumerable_thread_specific<StarScratch>& scratches, SolidRepair& done)
   {
     const std::uint32_t n = complex_.numVertices ();
-    const std::size_t blocks = (std::size_t (n) + shift + MENDING_BLOCK - 1) / MENDING_BLOCK;
+    const std::size_t blocks = (std::size_t (n) + shift + length - 1) / length;
     std::vector<std::vector<std::uint32_t>> left (blocks);
     std::vector<std::size_t> moved (blocks, 0);
     parallelForEach (
         blocks,
         [&] (std::size_t b) {
-          const std::size_t start = b * MENDING_BLOCK;
+          const std::size_t start = b * length;
           const auto lo = static_cast<std::uint32_t> (start < shift ? 0 : start - shift);
-          const auto hi = static_cast<std::uint32_t> (std::min<std::size_t> (n, start + MENDING_BLOCK - shift));
+          const auto hi = static_cast<std::uint32_t> (std::min<std::size_t> (n, start + length - shift));
           std::vector<std::uint32_t> stack (std::lower_bound (work.begin (), work.end (), lo),
                                             std::lower_bound (work.begin (), work.end (), hi));
           std::reverse (stack.begin (), stack.end ());
