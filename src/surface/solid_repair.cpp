@@ -95,13 +95,7 @@ public:
       joined.insert (joined.end (), cut.begin (), cut.end ());
     }
     done.flipped += joined.size ();
-    std::vector<std::uint32_t> touched;
-    for (std::uint32_t t : joined)
-      for (int i = 0; i < 4; ++i)
-        touched.push_back (complex_.vertex (3, t, i));
-    std::sort (touched.begin (), touched.end ());
-    touched.erase (std::unique (touched.begin (), touched.end ()), touched.end ());
-    mend (std::move (touched), done);
+    mend (verticesOf (joined), done);
     for (std::uint32_t v = 0; v < unmended_.size (); ++v)
       if (unmended_[v])
         done.pinched.push_back (v);
@@ -126,19 +120,15 @@ private:
     std::vector<std::uint32_t> moved;
     if (near.empty ())
       return moved;
-    if (!euler_change_)
-      euler_change_.emplace (tetrahedra_, labels_.inside);
+    const SolidEulerChange& euler_change = eulerChange ();
     StarScratch s;
-    std::vector<std::uint32_t> around;
+    std::vector<std::uint32_t> stars; // the tetrahedra around the vertices near a handle
     for (std::uint32_t v : near)
     {
       tetrahedra_.gatherStar (v, s.star);
-      for (std::uint32_t t : s.star.tetrahedra ())
-        for (int i = 0; i < 4; ++i)
-          around.push_back (tetrahedra_.vertex (t, i));
+      stars.insert (stars.end (), s.star.tetrahedra ().begin (), s.star.tetrahedra ().end ());
     }
-    std::sort (around.begin (), around.end ());
-    around.erase (std::unique (around.begin (), around.end ()), around.end ());
+    const std::vector<std::uint32_t> around = verticesOf (stars);
     struct Candidate
     {
       double weight;
@@ -160,7 +150,7 @@ private:
             {
               std::vector<std::uint32_t> part = members (scratch, parts, p);
               std::sort (part.begin (), part.end ());
-              if ((*euler_change_) (part, scratch.euler) == 1)
+              if (euler_change (part, scratch.euler) == 1)
                 candidates.push_back ({parts.weight[p], std::move (part)});
             }
         },
@@ -176,14 +166,16 @@ private:
       const bool side = inside (c.tetrahedra.front ());
       if (std::any_of (c.tetrahedra.begin (), c.tetrahedra.end (),
                        [&] (std::uint32_t t) { return inside (t) != side; }) ||
-          (*euler_change_) (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
+          euler_change (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
         continue; // moved in part, or its handle is cut
-      for (std::uint32_t t : c.tetrahedra)
-        labels_.inside[t] ^= 1u;
-      if (!leavesManifold (c.tetrahedra, s))
-      {
+      const auto turn = [&] {
         for (std::uint32_t t : c.tetrahedra)
           labels_.inside[t] ^= 1u;
+      };
+      turn ();
+      if (!leavesManifold (c.tetrahedra, s))
+      {
+        turn (); // back
         continue;
       }
       for (std::uint32_t t : c.tetrahedra)
@@ -200,13 +192,7 @@ private:
     * two of its triangles? */
   bool leavesManifold (const std::vector<std::uint32_t>& part, StarScratch& s) const
   {
-    std::vector<std::uint32_t> vertices;
-    for (std::uint32_t t : part)
-      for (int i = 0; i < 4; ++i)
-        vertices.push_back (tetrahedra_.vertex (t, i));
-    std::sort (vertices.begin (), vertices.end ());
-    vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
-    for (std::uint32_t v : vertices)
+    for (std::uint32_t v : verticesOf (part))
     {
       tetrahedra_.gatherStar (v, s.star);
       const Parts parts = split (s, [] (int) { return true; });
@@ -300,8 +286,7 @@ private:
   {
     if (work.empty ())
       return;
-    if (!euler_change_)
-      euler_change_.emplace (tetrahedra_, labels_.inside);
+    eulerChange ();
     std::vector<std::uint8_t> queued (complex_.numVertices (), 0);
     tbb::enumerable_thread_specific<StarScratch> scratches;
     // Blocks, then blocks shifted by half their length, then both again sixteen times longer.
@@ -389,6 +374,27 @@ private:
       }
     }
     return moved;
+  }
+
+  /** The vertices of \a tetrahedra, ascending, each once. */
+  std::vector<std::uint32_t> verticesOf (const std::vector<std::uint32_t>& tetrahedra) const
+  {
+    std::vector<std::uint32_t> vertices;
+    for (std::uint32_t t : tetrahedra)
+      for (int i = 0; i < 4; ++i)
+        vertices.push_back (tetrahedra_.vertex (t, i));
+    std::sort (vertices.begin (), vertices.end ());
+    vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
+    return vertices;
+  }
+
+  /** The weighing of moves by the solid's Euler characteristic, made (counting the inside
+    * tetrahedra at each vertex) when first needed. */
+  const SolidEulerChange& eulerChange ()
+  {
+    if (!euler_change_)
+      euler_change_.emplace (tetrahedra_, labels_.inside);
+    return *euler_change_;
   }
 
   bool starWithin (const Star& star, std::uint32_t lo, std::uint32_t hi) const
