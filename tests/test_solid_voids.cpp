@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 #include <vector>
 
@@ -84,6 +85,43 @@ TEST (SolidVoids, FillsABubbleKeepsASampledVoidAndTheOutside)
     EXPECT_EQ (moved[t], region[t] == BUBBLE);
   }
   EXPECT_EQ (filled.size (), bubble);
+}
+
+TEST (SolidVoids, AfterAFewMovesTheSearchNearThemFillsWhatTheWholeSearchFills)
+{
+  // A solid of random labels has voids of every size; once the small ones are filled, a few
+  // tetrahedra change side (some making new voids, some splitting or opening old ones), and the
+  // search near them must fill exactly what a search of the whole solid fills.
+  const Pipeline p (cubeSample (3000, 5));
+  const std::size_t n = p.complex.size (3);
+  std::mt19937 random (3);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    detail::SolidLabels labels;
+    for (std::size_t t = 0; t < n; ++t)
+    {
+      labels.inside.push_back (random () % 100 < 70);
+      labels.margin.push_back (1.0f);
+    }
+    std::vector<std::uint8_t> moved (n, 0);
+    detail::fillUnsampledVoids (p.tetrahedra, labels, moved);
+    std::vector<std::uint32_t> changed;
+    for (std::uint32_t t = 0; t < n; ++t)
+      if (random () % 100 < 3)
+      {
+        labels.inside[t] ^= 1u;
+        changed.push_back (t);
+      }
+    detail::SolidLabels whole = labels, near = labels;
+    std::vector<std::uint8_t> moved_whole (n, 0), moved_near (n, 0);
+    const std::vector<std::uint32_t> filled_whole = detail::fillUnsampledVoids (p.tetrahedra, whole, moved_whole);
+    const std::vector<std::uint32_t> filled_near =
+        detail::fillUnsampledVoidsNear (p.tetrahedra, near, moved_near, changed);
+    ASSERT_FALSE (filled_whole.empty ()) << "trial " << trial << ": no void to find";
+    EXPECT_EQ (filled_near, filled_whole) << "trial " << trial;
+    EXPECT_EQ (near.inside, whole.inside);
+    EXPECT_EQ (moved_near, moved_whole);
+  }
 }
 
 } // namespace

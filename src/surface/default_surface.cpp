@@ -117,7 +117,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {
       labels.inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
     });
-  const SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
+  SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
   clock.stageDone ("repair");
 
@@ -125,7 +125,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   // touching itself, split there, at the pinched vertices alone or, when an edge needs more than
   // the two simple pairings, as the raw output's pinches are split.
   Output out;
-  out.w = extractSolidBoundary (adjacency_, labels.inside);
+  out.w = repair.surface ? std::move (*repair.surface) : extractSolidBoundary (adjacency_, labels.inside);
   std::unique_ptr<Subcomplex> pinched_solid;
   if (!repair.pinched.empty ())
   {

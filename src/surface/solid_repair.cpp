@@ -84,18 +84,25 @@ public:
     mend (std::move (work), done);
     std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
-    const std::vector<std::uint32_t> filled = fillUnsampledVoids (tetrahedra_, labels_, flipped_);
+    const std::vector<std::uint32_t> filled = fillUnsampledVoidsNear (tetrahedra_, labels_, flipped_, movedSoFar ());
     joined.insert (joined.end (), filled.begin (), filled.end ());
     if (euler_change_)
       for (std::uint32_t t : joined)
         euler_change_->changedSide (t);
-    if (stays_buried_.empty ()) // not a volume, whose solid is X's
+    std::optional<Boundary> surface; // while it is the solid's
+    if (stays_buried_.empty ())      // not a volume, whose solid is X's
     {
-      const std::vector<std::uint32_t> cut = cutSmallHandles ();
+      surface = extractSolidBoundary (tetrahedra_, labels_.inside);
+      const std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles);
+      if (!cut.empty ())
+        surface.reset ();
       joined.insert (joined.end (), cut.begin (), cut.end ());
     }
     done.flipped += joined.size ();
+    const std::size_t flipped_before = done.flipped;
     mend (verticesOf (joined), done);
+    if (done.flipped == flipped_before)
+      done.surface = std::move (surface);
     for (std::uint32_t v = 0; v < unmended_.size (); ++v)
       if (unmended_[v])
         done.pinched.push_back (v);
@@ -105,7 +112,22 @@ public:
 private:
   using LinkEdge = std::array<std::uint32_t, 2>;
 
-  /** Cuts the small handles of the solid's surface (verticesOnSmallHandles()). The candidates
+  /** The tetrahedra moved so far, ascending. */
+  std::vector<std::uint32_t> movedSoFar () const
+  {
+    std::vector<std::uint32_t> moved;
+    fillInOrder (
+        flipped_.size (), [&] (std::size_t t) { return flipped_[t] ? 1 : 0; },
+        [&] (std::size_t size) { moved.resize (size); },
+        [&] (std::size_t t, std::size_t at) {
+          if (flipped_[t])
+            moved[at++] = static_cast<std::uint32_t> (t);
+          return at;
+        });
+    return moved;
+  }
+
+  /** Cuts the small handles of the solid's \a surface (verticesOnSmallHandles()). The candidates
     * are the connected parts of the stars of the vertices near one and of their stars' vertices
     * whose move changes the solid's Euler characteristic by +1, found on all threads. Weakest
     * first, a candidate changes side if it still does that, the tetrahedra it leaves on its side
@@ -113,10 +135,9 @@ private:
     * vertices. Such a move neither splits a part off nor opens or closes a void, so it takes one
     * handle away and makes none: there are at most as many moves as handles. Returns the
     * tetrahedra moved. */
-  std::vector<std::uint32_t> cutSmallHandles ()
+  std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface)
   {
-    const std::vector<std::uint32_t> near =
-        verticesOnSmallHandles (extractSolidBoundary (tetrahedra_, labels_.inside).triangles, complex_.numVertices ());
+    const std::vector<std::uint32_t> near = verticesOnSmallHandles (surface, complex_.numVertices ());
     std::vector<std::uint32_t> moved;
     if (near.empty ())
       return moved;

@@ -4,10 +4,12 @@
 
 #include "delaunay/tetrahedra.h"
 #include "surface/solid_labelling.h"
+#include "wrap/boundary.h"
 #include "wrap/subcomplex.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -18,6 +20,9 @@ struct SolidRepair
 {
   std::size_t flipped = 0;          ///< tetrahedra moved to the other side
   std::vector<std::uint32_t> pinched; ///< vertices where the surface still touches itself, ascending
+  /** The repaired solid's surface, extractSolidBoundary() of its labels, when the repair read it
+    * off after its last move (to look for handles): so it need not be read off again. */
+  std::optional<Boundary> surface;
 };
 
 /** \brief Moves tetrahedra across the surface of the solid in \a labels, weakest votes first,

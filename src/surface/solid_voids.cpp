@@ -4,8 +4,12 @@
 
 #include "surface/solid_join.h"
 #include "util/parallel_for_each.h"
+#include "util/union_find.h"
 
 #include <algorithm>
+#include <atomic>
+#include <memory>
+#include <unordered_map>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -15,34 +19,125 @@ std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved)
 {
   const std::size_t n = tetrahedra.size ();
-  std::vector<std::uint8_t> outside (n);
-  parallelForEach (n, [&] (std::size_t t) { outside[t] = !labels.inside[t]; });
-  const SolidParts parts = solidParts (tetrahedra, outside);
+  const std::vector<std::uint8_t>& inside = labels.inside;
+  // The outside's connected parts, each named by its lowest tetrahedron.
+  UnionFind parts;
+  parts.resetInParallel (n);
+  parallelForEach (n, [&] (std::size_t id) {
+    const auto t = static_cast<std::uint32_t> (id);
+    for (int i = 0; !inside[t] && i < 4; ++i)
+    {
+      const std::uint32_t u = tetrahedra.neighbour (t, i);
+      if (u != OUTSIDE_HULL && u > t && !inside[u])
+        parts.uniteConcurrently (t, u);
+    }
+  });
   // A part reaching the hull is the outside; the others are voids, most of them a few tetrahedra.
-  std::vector<std::uint8_t> open (parts.size.size (), 0);
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (outside[t])
-      for (int i = 0; i < 4; ++i)
-        if (tetrahedra.neighbour (t, i) == OUTSIDE_HULL)
-          open[parts.part[t]] = 1;
+  std::unique_ptr<std::atomic<std::uint8_t>[]> open (new std::atomic<std::uint8_t>[n]());
+  parallelForEach (n, [&] (std::size_t t) {
+    for (int i = 0; !inside[t] && i < 4; ++i)
+      if (tetrahedra.neighbour (static_cast<std::uint32_t> (t), i) == OUTSIDE_HULL)
+        open[parts.findConcurrently (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
+  });
+  const auto inVoid = [&] (std::size_t t) {
+    return !inside[t] &&
+           !open[parts.findConcurrently (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
+  };
+  std::vector<std::uint32_t> in_voids; // ascending
+  fillInOrder (
+      n, [&] (std::size_t t) { return inVoid (t) ? 1 : 0; }, [&] (std::size_t size) { in_voids.resize (size); },
+      [&] (std::size_t t, std::size_t at) {
+        if (inVoid (t))
+          in_voids[at++] = static_cast<std::uint32_t> (t);
+        return at;
+      });
   std::vector<std::pair<std::uint32_t, std::uint32_t>> corners; // (void, vertex)
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (outside[t] && !open[parts.part[t]])
-      for (int i = 0; i < 4; ++i)
-        corners.emplace_back (parts.part[t], tetrahedra.vertex (t, i));
+  for (std::uint32_t t : in_voids)
+    for (int i = 0; i < 4; ++i)
+      corners.emplace_back (parts.find (t), tetrahedra.vertex (t, i));
   std::sort (corners.begin (), corners.end ());
   corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
-  std::vector<std::uint32_t> vertices (parts.size.size (), 0);
+  std::unordered_map<std::uint32_t, std::uint32_t> vertices; // per void
   for (const auto& c : corners)
     ++vertices[c.first];
   std::vector<std::uint32_t> filled;
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (outside[t] && !open[parts.part[t]] && vertices[parts.part[t]] < FRAGMENT_VERTICES)
+  for (std::uint32_t t : in_voids)
+    if (vertices[parts.find (t)] < FRAGMENT_VERTICES)
     {
       labels.inside[t] = 1;
       moved[t] = 1;
       filled.push_back (t);
     }
+  return filled;
+}
+
+std::vector<std::uint32_t>
+fillUnsampledVoidsNear (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
+                        const std::vector<std::uint32_t>& changed)
+{
+  std::vector<std::uint32_t> seeds;
+  for (std::uint32_t t : changed)
+  {
+    seeds.push_back (t);
+    for (int i = 0; i < 4; ++i)
+      if (tetrahedra.neighbour (t, i) != OUTSIDE_HULL)
+        seeds.push_back (tetrahedra.neighbour (t, i));
+  }
+  std::sort (seeds.begin (), seeds.end ());
+  seeds.erase (std::unique (seeds.begin (), seeds.end ()), seeds.end ());
+  // From each seed outside, the outside tetrahedra connected to it, until they reach the hull, a
+  // part found before to be large, or FRAGMENT_VERTICES vertices: then they are the outside or a
+  // void the points show.
+  enum : std::uint8_t
+  {
+    UNSEEN,
+    SEARCHED,
+    LARGE
+  };
+  std::vector<std::uint8_t> state (tetrahedra.size (), UNSEEN);
+  std::vector<std::uint32_t> filled, part, stack, corners;
+  for (std::uint32_t seed : seeds)
+  {
+    if (labels.inside[seed] || state[seed] != UNSEEN)
+      continue;
+    part.clear ();
+    corners.clear ();
+    stack.assign (1, seed);
+    state[seed] = SEARCHED;
+    bool small = true;
+    while (small && !stack.empty ())
+    {
+      const std::uint32_t t = stack.back ();
+      stack.pop_back ();
+      part.push_back (t);
+      for (int i = 0; i < 4; ++i)
+        if (std::find (corners.begin (), corners.end (), tetrahedra.vertex (t, i)) == corners.end ())
+          corners.push_back (tetrahedra.vertex (t, i));
+      small = corners.size () < FRAGMENT_VERTICES;
+      for (int i = 0; small && i < 4; ++i)
+      {
+        const std::uint32_t u = tetrahedra.neighbour (t, i);
+        small = u != OUTSIDE_HULL && state[u] != LARGE;
+        if (small && !labels.inside[u] && state[u] == UNSEEN)
+        {
+          state[u] = SEARCHED;
+          stack.push_back (u);
+        }
+      }
+    }
+    if (small)
+      filled.insert (filled.end (), part.begin (), part.end ());
+    else
+      for (const std::vector<std::uint32_t>* list : {&part, &stack})
+        for (std::uint32_t t : *list)
+          state[t] = LARGE;
+  }
+  std::sort (filled.begin (), filled.end ());
+  for (std::uint32_t t : filled)
+  {
+    labels.inside[t] = 1;
+    moved[t] = 1;
+  }
   return filled;
 }
 

@@ -20,4 +20,12 @@ namespace pcl_wrap::detail
 std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
+/** \brief fillUnsampledVoids() after a few tetrahedra \a changed side in a solid that had no void
+  * to fill: such a void now holds one of them or lies next to one, so only the outside tetrahedra
+  * connected to those are searched, each search ending at the hull or at FRAGMENT_VERTICES
+  * vertices. Fills the same voids, in time proportional to the change. */
+std::vector<std::uint32_t>
+fillUnsampledVoidsNear (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
+                        const std::vector<std::uint32_t>& changed);
+
 } // namespace pcl_wrap::detail
