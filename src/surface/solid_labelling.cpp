@@ -3,6 +3,7 @@
 #include "surface/solid_labelling.h"
 
 #include "util/parallel_for_each.h"
+#include "util/portable.h"
 
 #include <algorithm>
 #include <array>
@@ -167,6 +168,8 @@ SolidLabelling::cast (std::uint32_t t, std::uint8_t side, int vote)
   to = strength;
   const int b = bucketOf (r.in, r.out);
   queue_[b].push_back (t);
+  // Pushed on the top bucket, it is often the next popped: its neighbours are on their way.
+  prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (t)]);
   top_ = std::max (top_, b);
 }
 
@@ -184,7 +187,7 @@ SolidLabelling::castFrom (std::uint32_t t)
 }
 
 void
-SolidLabelling::prefetch (const std::vector<std::uint32_t>& bucket) const
+SolidLabelling::prefetchNextPops (const std::vector<std::uint32_t>& bucket) const
 {
   // The flood jumps all over the mesh, and each tetrahedron it pops costs a few cache misses: its
   // record and neighbours, then its neighbours' records. A bucket is a stack, so the tetrahedra
@@ -193,14 +196,14 @@ SolidLabelling::prefetch (const std::vector<std::uint32_t>& bucket) const
   if (bucket.size () < 8)
     return;
   const std::uint32_t later = bucket[bucket.size () - 8];
-  __builtin_prefetch (&tets_[later]);
-  __builtin_prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (later)]);
+  prefetch (&tets_[later]);
+  prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (later)]);
   const std::uint32_t soon = bucket[bucket.size () - 4];
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t u = adjacency_.neighbour (soon, i);
     if (u != OUTSIDE_HULL)
-      __builtin_prefetch (&tets_[u]);
+      prefetch (&tets_[u]);
   }
 }
 
@@ -218,7 +221,7 @@ SolidLabelling::run (const Subcomplex* x)
     const int b = top_;
     const std::uint32_t t = bucket.back ();
     bucket.pop_back ();
-    prefetch (bucket);
+    prefetchNextPops (bucket);
     Record& r = tets_[t];
     if (r.label != UNKNOWN || bucketOf (r.in, r.out) != b)
       continue; // labelled, or queued again at another priority

@@ -71,7 +71,7 @@ private:
 
   void cast (std::uint32_t t, std::uint8_t side, int vote);
   void castFrom (std::uint32_t t);
-  void prefetch (const std::vector<std::uint32_t>& bucket) const; ///< what the next pops will read
+  void prefetchNextPops (const std::vector<std::uint32_t>& bucket) const; ///< what they will read
   void run (const Subcomplex* x); ///< without X, ties are set aside
   SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
 

@@ -4,7 +4,7 @@
 
 // What the engine needs beyond standard C++17, in one place: atomic access to plain array
 // elements (the arrays are filled in parallel, then read plainly), the lowest set bit of a mask,
-// and advice on memory pages. GCC and Clang have builtins for the first two; with another
+// and advice on memory pages and caches. GCC and Clang have builtins for the first two; with another
 // compiler, C++20's std::atomic_ref and std::countr_zero take their place.
 
 #include <cstddef>
@@ -122,6 +122,17 @@ adviseHugePages (void* at, std::size_t bytes)
 #else
   (void) at;
   (void) bytes;
+#endif
+}
+
+/** Asks for the cache line at \a at to be fetched, for a read soon; a hint only. */
+inline void
+prefetch (const void* at)
+{
+#if defined(__GNUC__)
+  __builtin_prefetch (at);
+#else
+  (void)at;
 #endif
 }
 
