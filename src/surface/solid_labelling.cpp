@@ -135,7 +135,7 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     return sphereAngleCosine (rho2, ht, hu);
   };
   // A vote is the same from both sides: each interior facet's is computed by its lower-numbered
-  // tetrahedron and copied to the other.
+  // tetrahedron, which writes it into the other's record too (into a field that only it writes).
   parallelForEach (n, [&] (std::size_t t) {
     Record& r = tets_[t];
     r.in = r.out = 0;
@@ -143,18 +143,21 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     for (int i = 0; i < 4; ++i)
     {
       const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
-      if (u == OUTSIDE_HULL || u > t)
-        r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
-    }
-  });
-  parallelForEach (n, [&] (std::size_t t) {
-    for (int i = 0; i < 4; ++i)
-    {
-      const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
       if (u != OUTSIDE_HULL && u < t)
-        tets_[t].vote[i] = tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)];
+        continue;
+      r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
+      if (u != OUTSIDE_HULL)
+        tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r.vote[i];
     }
   });
+  // Where the flood starts, found here on all threads rather than by the flood's one.
+  const auto onHull = [&] (std::size_t t) {
+    for (int i = 0; i < 4; ++i)
+      if (adjacency.neighbour (static_cast<std::uint32_t> (t), i) == OUTSIDE_HULL)
+        return true;
+    return false;
+  };
+  on_hull_ = indicesWhere (n, onHull);
 }
 
 void
@@ -239,10 +242,11 @@ SolidLabelling::run (const Subcomplex* x)
 void
 SolidLabelling::flood ()
 {
-  for (std::uint32_t t = 0; t < tets_.size (); ++t)
+  for (std::uint32_t t : on_hull_)
     for (int i = 0; i < 4; ++i)
       if (adjacency_.neighbour (t, i) == OUTSIDE_HULL)
         cast (t, tets_[t].vote[i] < 0 ? INSIDE : OUTSIDE, tets_[t].vote[i]);
+  std::vector<std::uint32_t> ().swap (on_hull_);
   run (nullptr);
   std::vector<std::vector<std::uint32_t>> (BUCKETS).swap (queue_); // every bucket is empty: free them
   // With no tie for X to break, the labels are final: kept in 5 bytes per tetrahedron instead of

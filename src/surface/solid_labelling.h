@@ -79,6 +79,7 @@ private:
   FilledInParallel<Record> tets_;
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
   int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
+  std::vector<std::uint32_t> on_hull_;            ///< the tetrahedra with a facet on the hull, ascending
   std::vector<std::uint32_t> tied_;
   std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, the records freed
 };

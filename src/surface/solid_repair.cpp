@@ -115,16 +115,7 @@ private:
   /** The tetrahedra moved so far, ascending. */
   std::vector<std::uint32_t> movedSoFar () const
   {
-    std::vector<std::uint32_t> moved;
-    fillInOrder (
-        flipped_.size (), [&] (std::size_t t) { return flipped_[t] ? 1 : 0; },
-        [&] (std::size_t size) { moved.resize (size); },
-        [&] (std::size_t t, std::size_t at) {
-          if (flipped_[t])
-            moved[at++] = static_cast<std::uint32_t> (t);
-          return at;
-        });
-    return moved;
+    return indicesWhere (flipped_.size (), [&] (std::size_t t) { return flipped_[t] != 0; });
   }
 
   /** Cuts the small handles of the solid's \a surface (verticesOnSmallHandles()). The candidates

@@ -43,15 +43,8 @@ fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vect
     return !inside[t] &&
            !open[parts.findConcurrently (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
   };
-  std::vector<std::uint32_t> in_voids; // ascending
-  fillInOrder (
-      n, [&] (std::size_t t) { return inVoid (t) ? 1 : 0; }, [&] (std::size_t size) { in_voids.resize (size); },
-      [&] (std::size_t t, std::size_t at) {
-        if (inVoid (t))
-          in_voids[at++] = static_cast<std::uint32_t> (t);
-        return at;
-      });
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners; // (void, vertex)
+  const std::vector<std::uint32_t> in_voids = indicesWhere (n, inVoid); // ascending
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;         // (void, vertex)
   for (std::uint32_t t : in_voids)
     for (int i = 0; i < 4; ++i)
       corners.emplace_back (parts.find (t), tetrahedra.vertex (t, i));

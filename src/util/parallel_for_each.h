@@ -72,6 +72,22 @@ fillInOrder (std::size_t n, const Count& count, const Resize& resize, const Writ
   }, 1);
 }
 
+/** \brief The i in [0, n) for which pred(i) holds, ascending, found on TBB's threads. */
+template <class Pred>
+std::vector<std::uint32_t>
+indicesWhere (std::size_t n, const Pred& pred)
+{
+  std::vector<std::uint32_t> out;
+  fillInOrder (
+      n, [&] (std::size_t i) { return pred (i) ? 1 : 0; }, [&] (std::size_t size) { out.resize (size); },
+      [&] (std::size_t i, std::size_t at) {
+        if (pred (i))
+          out[at++] = static_cast<std::uint32_t> (i);
+        return at;
+      });
+  return out;
+}
+
 /** \brief Does nothing with a bucket: bucketInParallel's default last step. */
 struct LeaveBucket
 {
