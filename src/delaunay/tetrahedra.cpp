@@ -5,6 +5,7 @@
 #include "util/parallel_for_each.h"
 #include "util/portable.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -95,6 +96,18 @@ Tetrahedra::gatherStar (std::uint32_t v, Star& star) const
       if (vertex (t, i) != v && neighbour (t, i) != OUTSIDE_HULL)
         star.add (neighbour (t, i)); // across a facet that holds v
   }
+}
+
+std::vector<std::uint32_t>
+Tetrahedra::verticesOf (const std::vector<std::uint32_t>& ids) const
+{
+  std::vector<std::uint32_t> out;
+  out.reserve (4 * ids.size ());
+  for (std::uint32_t t : ids)
+    out.insert (out.end (), vertices (t), vertices (t) + 4);
+  std::sort (out.begin (), out.end ());
+  out.erase (std::unique (out.begin (), out.end ()), out.end ());
+  return out;
 }
 
 } // namespace pcl_wrap::detail

@@ -90,6 +90,8 @@ public:
   const SimplicialComplex& complex () const { return *complex_; }
   std::uint32_t vertex (std::uint32_t t, int i) const { return complex_->vertex (3, t, i); }
   const std::uint32_t* vertices (std::uint32_t t) const { return complex_->vertices (3, t); }
+  /** \brief The vertices of the tetrahedra \a ids, ascending, each once. */
+  std::vector<std::uint32_t> verticesOf (const std::vector<std::uint32_t>& ids) const;
   bool hasVertex (std::uint32_t t, std::uint32_t v) const
   {
     const std::uint32_t* a = vertices (t);

@@ -38,11 +38,7 @@ public:
     * coarse sample has a long one)? */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
-    std::vector<std::uint32_t> corners;
-    for (std::uint32_t t : chain)
-      corners.insert (corners.end (), tetrahedra_.vertices (t), tetrahedra_.vertices (t) + 4);
-    std::sort (corners.begin (), corners.end ());
-    corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
+    const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (chain);
     std::vector<std::pair<std::uint32_t, double>> on_p, on_q; // (vertex, its spacing)
     for (std::uint32_t v : corners)
     {
@@ -157,11 +153,7 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
   for (std::uint32_t p : order)
   {
     const std::uint32_t mine = joined.find (p);
-    std::vector<std::uint32_t> corners;
-    for (std::uint32_t t : members[p])
-      corners.insert (corners.end (), tetrahedra.vertices (t), tetrahedra.vertices (t) + 4);
-    std::sort (corners.begin (), corners.end ());
-    corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
+    const std::vector<std::uint32_t> corners = tetrahedra.verticesOf (members[p]);
     const bool fragment = corners.size () < FRAGMENT_VERTICES;
     // A part of its own may only close a gap at its surface: its search stays among the
     // tetrahedra that touch it.

@@ -100,7 +100,7 @@ public:
     }
     done.flipped += joined.size ();
     const std::size_t flipped_before = done.flipped;
-    mend (verticesOf (joined), done);
+    mend (tetrahedra_.verticesOf (joined), done);
     if (done.flipped == flipped_before)
       done.surface = std::move (surface);
     for (std::uint32_t v = 0; v < unmended_.size (); ++v)
@@ -140,7 +140,7 @@ private:
       tetrahedra_.gatherStar (v, s.star);
       stars.insert (stars.end (), s.star.tetrahedra ().begin (), s.star.tetrahedra ().end ());
     }
-    const std::vector<std::uint32_t> around = verticesOf (stars);
+    const std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars);
     struct Candidate
     {
       double weight;
@@ -204,7 +204,7 @@ private:
     * two of its triangles? */
   bool leavesManifold (const std::vector<std::uint32_t>& part, StarScratch& s) const
   {
-    for (std::uint32_t v : verticesOf (part))
+    for (std::uint32_t v : tetrahedra_.verticesOf (part))
     {
       tetrahedra_.gatherStar (v, s.star);
       const Parts parts = split (s, [] (int) { return true; });
@@ -386,18 +386,6 @@ private:
       }
     }
     return moved;
-  }
-
-  /** The vertices of \a tetrahedra, ascending, each once. */
-  std::vector<std::uint32_t> verticesOf (const std::vector<std::uint32_t>& tetrahedra) const
-  {
-    std::vector<std::uint32_t> vertices;
-    for (std::uint32_t t : tetrahedra)
-      for (int i = 0; i < 4; ++i)
-        vertices.push_back (tetrahedra_.vertex (t, i));
-    std::sort (vertices.begin (), vertices.end ());
-    vertices.erase (std::unique (vertices.begin (), vertices.end ()), vertices.end ());
-    return vertices;
   }
 
   /** The weighing of moves by the solid's Euler characteristic, made (counting the inside
