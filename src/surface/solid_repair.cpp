@@ -121,9 +121,10 @@ private:
   /** Cuts the small handles of the solid's \a surface (verticesOnSmallHandles()). The candidates
     * are the connected parts of the stars of the vertices near one and of their stars' vertices
     * whose move changes the solid's Euler characteristic by +1, found on all threads. Weakest
-    * first, a candidate changes side if it still does that, the tetrahedra it leaves on its side
-    * stay connected (within HANDLE_REACH tetrahedra), and the surface stays a 2-manifold at its
-    * vertices. Such a move neither splits a part off nor opens or closes a void, so it takes one
+    * first, a candidate changes side, with the pockets it would enclose and the parts it would
+    * leave pinched (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its
+    * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
+    * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void, so it takes one
     * handle away and makes none: there are at most as many moves as handles. Returns the
     * tetrahedra moved. */
   std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface)
@@ -177,20 +178,16 @@ private:
     {
       const bool side = inside (c.tetrahedra.front ());
       if (std::any_of (c.tetrahedra.begin (), c.tetrahedra.end (),
-                       [&] (std::uint32_t t) { return inside (t) != side; }) ||
-          euler_change (c.tetrahedra, s.euler) != 1 || !staysConnected (c.tetrahedra, reached, ++search))
-        continue; // moved in part, or its handle is cut
-      const auto turn = [&] {
-        for (std::uint32_t t : c.tetrahedra)
-          labels_.inside[t] ^= 1u;
-      };
-      turn ();
-      if (!leavesManifold (c.tetrahedra, s))
-      {
-        turn (); // back
-        continue;
-      }
-      for (std::uint32_t t : c.tetrahedra)
+                       [&] (std::uint32_t t) { return inside (t) != side; }))
+        continue; // moved in part
+      if (euler_change (c.tetrahedra, s.euler) < 1)
+        continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
+      const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s);
+      if (move.empty ())
+        continue; // its handle is cut, or the move would cut a side in two or leave a pinch
+      for (std::uint32_t t : move)
+        labels_.inside[t] ^= 1u;
+      for (std::uint32_t t : move)
       {
         euler_change_->changedSide (t);
         flipped_[t] = 1;
@@ -200,26 +197,65 @@ private:
     return moved;
   }
 
-  /** Is the surface one fan at every vertex of the tetrahedra \a part, with no edge on more than
-    * two of its triangles? */
-  bool leavesManifold (const std::vector<std::uint32_t>& part, StarScratch& s) const
+  /** The move that cuts a handle with \a part (sorted, all on one side): \a part, the pockets
+    * it encloses (moveKeepingSidesConnected()), and the weaker parts of its side that it would leave
+    * apart around a vertex of it (a pinch), grown so a few times; empty if the move changes the
+    * solid's Euler characteristic by other than +1, cuts its side in two, or leaves the surface
+    * other than a 2-manifold at its vertices. */
+  std::vector<std::uint32_t> closedMove (std::vector<std::uint32_t> part, std::vector<std::uint32_t>& reached,
+                                         std::uint32_t& search, StarScratch& s)
   {
-    for (std::uint32_t v : tetrahedra_.verticesOf (part))
+    const std::uint8_t side = inside (part.front ());
+    for (int grown = 0; grown <= 2; ++grown)
     {
-      tetrahedra_.gatherStar (v, s.star);
-      const Parts parts = split (s, [] (int) { return true; });
-      if (parts.count[0] + parts.count[1] > 2 || pinchedEdge (s) != NONE)
-        return false;
+      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search);
+      if (move.empty () || euler_change_->operator() (move, s.euler) != 1)
+        return {};
+      for (std::uint32_t t : move)
+        labels_.inside[t] ^= 1u;
+      bool manifold = true;
+      std::vector<std::uint32_t> apart;
+      for (std::uint32_t v : tetrahedra_.verticesOf (move))
+      {
+        tetrahedra_.gatherStar (v, s.star);
+        const Parts parts = split (s, [] (int) { return true; });
+        if (parts.count[0] + parts.count[1] <= 2 && pinchedEdge (s) == NONE)
+          continue;
+        manifold = false;
+        // All of the side the move left but its strongest part.
+        std::uint32_t strongest = NONE;
+        for (std::uint32_t p = 0; p < parts.side.size (); ++p)
+          if (parts.side[p] == side && (strongest == NONE || parts.weight[p] > parts.weight[strongest]))
+            strongest = p;
+        for (std::uint32_t p = 0; p < parts.side.size (); ++p)
+          if (parts.side[p] == side && p != strongest && parts.movable[p])
+          {
+            const std::vector<std::uint32_t> more = members (s, parts, p);
+            apart.insert (apart.end (), more.begin (), more.end ());
+          }
+      }
+      for (std::uint32_t t : move)
+        labels_.inside[t] ^= 1u;
+      if (manifold)
+        return move;
+      if (apart.empty ())
+        return {};
+      part = std::move (move);
+      part.insert (part.end (), apart.begin (), apart.end ());
+      std::sort (part.begin (), part.end ());
+      part.erase (std::unique (part.begin (), part.end ()), part.end ());
     }
-    return true;
+    return {};
   }
 
-  /** Do the tetrahedra across the facets of \a part (sorted, all on one side) on its side stay
-    * connected without it, through at most HANDLE_REACH tetrahedra of that side (and the space
-    * beyond the hull, for the outside)? \a reached: per tetrahedron, the last \a search to reach
-    * it. */
-  bool staysConnected (const std::vector<std::uint32_t>& part, std::vector<std::uint32_t>& reached,
-                       std::uint32_t search) const
+  /** The tetrahedra to move for \a part (sorted, all on one side) if the tetrahedra across its
+    * facets on its side stay connected without it, through at most HANDLE_REACH tetrahedra of that
+    * side from each (and, for the outside, through the space beyond the hull); empty if not. A
+    * move into the solid may enclose small pockets of the outside (a search from them ends within
+    * the reach, short of the hull): they move with it, as fillUnsampledVoids() would fill them.
+    * \a reached: per tetrahedron, the last \a search to reach it. */
+  std::vector<std::uint32_t> moveKeepingSidesConnected (const std::vector<std::uint32_t>& part,
+                                                        std::vector<std::uint32_t>& reached, std::uint32_t search) const
   {
     const bool side = inside (part.front ());
     const auto inPart = [&] (std::uint32_t t) { return std::binary_search (part.begin (), part.end (), t); };
@@ -234,26 +270,45 @@ private:
         else if (inside (u) == side && !inPart (u))
           seeds.push_back (u);
       }
-    if (seeds.empty ())
-      return hull_seed; // nothing of its side beside it but the space beyond the hull
-    std::vector<std::uint32_t> queue{seeds.front ()};
-    reached[seeds.front ()] = search;
-    bool hull_reached = false;
-    for (std::size_t k = 0; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
-      for (int i = 0; i < 4; ++i)
-      {
-        const std::uint32_t u = tetrahedra_.neighbour (queue[k], i);
-        if (u == OUTSIDE_HULL)
-          hull_reached = true;
-        else if (reached[u] != search && inside (u) == side && !inPart (u))
+    // One search from each seed that no earlier search reached. What is left of the side is
+    // connected when one search reached all of it (and the hull, if the part touched it), or
+    // when every search reached the hull, beyond which the outside is one.
+    std::size_t searches = 0, to_hull = 0;
+    std::vector<std::uint32_t> move = part, queue;
+    for (std::uint32_t seed : seeds)
+    {
+      if (reached[seed] == search)
+        continue;
+      queue.assign (1, seed);
+      reached[seed] = search;
+      bool hull_reached = false;
+      for (std::size_t k = 0; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
+        for (int i = 0; i < 4; ++i)
         {
-          reached[u] = search;
-          queue.push_back (u);
+          const std::uint32_t u = tetrahedra_.neighbour (queue[k], i);
+          if (u == OUTSIDE_HULL)
+            hull_reached = true;
+          else if (reached[u] != search && inside (u) == side && !inPart (u))
+          {
+            reached[u] = search;
+            queue.push_back (u);
+          }
         }
+      if (!side && !hull_reached && queue.size () <= HANDLE_REACH)
+        move.insert (move.end (), queue.begin (), queue.end ()); // a pocket
+      else
+      {
+        ++searches;
+        to_hull += hull_reached;
       }
-    if (hull_seed && !hull_reached)
-      return false;
-    return std::all_of (seeds.begin (), seeds.end (), [&] (std::uint32_t u) { return reached[u] == search; });
+    }
+    const bool connected = searches == 0                  ? hull_seed
+                           : !side && to_hull == searches ? true
+                                                          : searches == 1 && (!hull_seed || to_hull == 1);
+    if (!connected)
+      return {};
+    std::sort (move.begin (), move.end ());
+    return move;
   }
 
   /** Per vertex, whether mendVertex() may have something to do there: the vertex is off the
