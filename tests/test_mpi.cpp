@@ -2,7 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // pcl_wrap_mpi under a real mpirun, 1 to 4 ranks (and 8 on a cloud of 6 points), against the
-// single process: X and W identical, simplex by simplex, triangles with their orientation.
+// single process: X and W identical, simplex by simplex, triangles with their orientation; the
+// default surface identical, byte for byte as written.
 #include "support/degenerate_samples.h"
 #include "support/samplers.h"
 
@@ -252,11 +253,79 @@ TEST (Mpi, OutputOverTheInputIsRefused)
   EXPECT_EQ (readFile (cloud), before);
 }
 
-TEST (Mpi, WithoutRawIsAUsageError)
+/** pcl_wrap's default surface on \a cloud, as it writes it to \a mesh. */
+void
+writeSingleProcessSurface (const fs::path& cloud, const fs::path& mesh, bool weights_column)
 {
-  const fs::path log = scratch () / "usage.log";
-  EXPECT_EQ (runMpi (2, writeCloud ("usage", test::cubeSample (50, 12)).string () + " u.ply", log), 2);
-  EXPECT_NE (readFile (log).find ("--raw"), std::string::npos) << readFile (log);
+  const apps::PointFile file = apps::readPointFile (cloud.string (), "", weights_column);
+  WrapParameters parameters;
+  parameters.viewpoint = file.viewpoint;
+  apps::writeSurfaceMesh (mesh.string (), file, computeWrap (file.points, file.weights, parameters));
+}
+
+/** The default surface on \a ranks ranks is the single process's, byte for byte. */
+void
+expectIdenticalSurface (const fs::path& cloud, std::vector<int> rank_counts = {1, 2, 3, 4}, bool weights_column = false)
+{
+  const fs::path expected = scratch () / (cloud.stem ().string () + "_single.ply");
+  writeSingleProcessSurface (cloud, expected, weights_column);
+  const std::string single = readFile (expected);
+  ASSERT_GT (single.size (), 100u);
+  for (int ranks : rank_counts)
+  {
+    const fs::path mesh = scratch () / (cloud.stem ().string () + "_" + std::to_string (ranks) + ".ply");
+    const fs::path log = scratch () / "surface.log";
+    ASSERT_EQ (runMpi (ranks,
+                       cloud.string () + " " + mesh.string () + " --quiet" +
+                           (weights_column ? " --weights-column" : ""),
+                       log),
+               0)
+        << readFile (log);
+    EXPECT_TRUE (readFile (mesh) == single) << cloud << " on " << ranks << " ranks: the default surface differs";
+  }
+}
+
+TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnClosedShapes)
+{
+  expectIdenticalSurface (writeCloud ("sphere_surface", test::sphereSample (6000, 2, 3e-3)));
+  expectIdenticalSurface (writeCloud ("torus_surface", test::torusSample (5000, 3)), {3});
+  // Two objects apart: the surface stage keeps them apart, whichever tiles they fall in.
+  std::vector<Point3> points = test::sphereSample (3000, 15, 1e-3);
+  for (const Point3& p : test::torusSample (3000, 16))
+    points.push_back ({p[0] + 3, p[1], p[2]});
+  expectIdenticalSurface (writeCloud ("apart_surface", points), {2, 4});
+}
+
+TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnNoiseOfASpacing)
+{
+  // Noise of a spacing (40,000 points on the unit sphere are about 0.009 apart): the repair
+  // moves thousands of tetrahedra, weakest first, ties broken by their numbering.
+  std::mt19937_64 random (17);
+  std::normal_distribution<double> g;
+  std::vector<Point3> points (40000);
+  for (auto& p : points)
+  {
+    const double x = g (random), y = g (random), z = g (random), r = std::sqrt (x * x + y * y + z * z);
+    p = {x / r + 0.009 * g (random), y / r + 0.009 * g (random), z / r + 0.009 * g (random)};
+  }
+  expectIdenticalSurface (writeCloud ("noisy_surface", points), {2, 3});
+}
+
+TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnASingleLayerAndOddInput)
+{
+  expectIdenticalSurface (writeCloud ("terrain_surface", test::terrainSample (3000, 4)), {1, 3});
+  std::vector<Point3> points = test::sphereSample (2000, 18, 1e-3);
+  for (int i = 0; i < 40; ++i)
+    points.push_back (points[7 * i]);
+  points.push_back ({std::nan (""), 0, 0});
+  expectIdenticalSurface (writeCloud ("duplicates_surface", points), {2});
+  std::mt19937 random (19);
+  std::uniform_real_distribution<double> weight (0.0, 1e-3);
+  const std::vector<Point3> weighted = test::sphereSample (2000, 20, 1e-3);
+  std::vector<double> weights (weighted.size ());
+  for (double& w : weights)
+    w = weight (random);
+  expectIdenticalSurface (writeCloud ("weighted_surface", weighted, weights), {2}, true);
 }
 
 } // namespace

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Copyright (C) 2026 the pcl_wrap authors
 //
-// pcl_wrap_mpi: the Wrap's raw W over MPI ranks, each holding one tile of the points
+// pcl_wrap_mpi: the Wrap over MPI ranks, each holding one tile of the points
 // (docs/mpi.md).
 #include "distributed_retraction.h"
+#include "gathered_surface.h"
 #include "message_exchange.h"
 #include "star_completion.h"
 #include "tile_complex.h"
@@ -49,11 +50,12 @@ struct Options
 };
 
 const char* const USAGE =
-    "usage: mpirun -np K pcl_wrap_mpi INPUT OUTPUT --raw [options]\n"
-    "The Wrap's raw W (as pcl_wrap --raw) computed by K MPI ranks, each holding one tile of the\n"
-    "points; the output is the same as one process's. INPUT is a point file, or a folder of point\n"
-    "files read in the order of their names as one (docs/mpi.md).\n"
-    "  --raw                 the paper's W = Bd X (required: the default surface is single-process)\n"
+    "usage: mpirun -np K pcl_wrap_mpi INPUT OUTPUT [options]\n"
+    "The Wrap computed by K MPI ranks, each holding one tile of the points; the output is the same\n"
+    "as one process's. INPUT is a point file, or a folder of point files read in the order of\n"
+    "their names as one (docs/mpi.md).\n"
+    "  --raw                 the paper's W = Bd X, as pcl_wrap --raw (default: pcl_wrap's default\n"
+    "                        surface, its surface stage run by rank 0 on the gathered tetrahedra)\n"
     "  --stats               print what the construction did, per tile and in total\n"
     "  --stats-json FILE     the statistics as JSON, as pcl_wrap writes them\n"
     "  --complex FILE        X and W as JSON, as pcl_wrap --complex writes them (no classes)\n"
@@ -110,8 +112,6 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
   }
   if (positional.size () != 2)
     return usageError ("give an input file and an output file");
-  if (!o.raw)
-    return usageError ("the default surface is computed by one process (pcl_wrap); give --raw for the raw W");
   o.input = positional[0];
   o.output = positional[1];
   if (!apps::isMeshFormat (o.output))
@@ -217,17 +217,33 @@ run (const Options& o, MPI_Comm comm)
   }
   clock.stageDone ("classification");
 
-  detail::Subcomplex y (part->complex (), part->releaseCofaceCounts ());
-  mpi::DistributedRetraction retraction (comm, *part, *classification, y);
-  retraction.retract ();
-  clock.stageDone ("retraction");
+  mpi::TileSolid solid; // for the default surface
+  std::vector<std::array<std::uint32_t, 3>> sheets;
+  std::uint64_t collapses = 0, removals = 0;
+  std::size_t retraction_rounds = 0;
+  {
+    detail::Subcomplex y (part->complex (), part->releaseCofaceCounts ());
+    mpi::DistributedRetraction retraction (comm, *part, *classification, y);
+    retraction.retract ();
+    collapses = mpi::sumOverRanks (comm, retraction.collapses ());
+    removals = mpi::sumOverRanks (comm, retraction.removalsSent ());
+    retraction_rounds = retraction.rounds ();
+    clock.stageDone ("retraction");
 
-  const mpi::TileWrap wrap = mpi::extractTileWrap (*part, y, !o.complex_json.empty ());
-  for (int k = 0; k <= 3; ++k)
-    if (!o.complex_json.empty ())
-      result.complex[k] = gatheredX (comm, wrap.x[k], k);
-  result.w = gatheredW (comm, wrap);
-  result.surface.triangles = result.w.triangles;
+    const mpi::TileWrap wrap = mpi::extractTileWrap (*part, y, !o.complex_json.empty ());
+    for (int k = 0; k <= 3; ++k)
+      if (!o.complex_json.empty ())
+        result.complex[k] = gatheredX (comm, wrap.x[k], k);
+    result.w = gatheredW (comm, wrap);
+    result.surface = result.w;
+    for (int k = 0; k <= 3; ++k)
+      stats.x_simplices[k] = mpi::sumOverRanks (comm, wrap.x_count[k]);
+    if (!o.raw)
+    {
+      sheets = mpi::gatherToRoot (comm, wrap.sheets);
+      solid = mpi::tileSolid (*part, y);
+    }
+  }
   result.hidden = gatheredSorted (comm, hidden); // in input order, as one process lists them
   clock.stageDone ("boundary");
 
@@ -240,34 +256,43 @@ run (const Options& o, MPI_Comm comm)
   for (int k = 0; k <= 3; ++k)
     for (int c = 0; c < 3; ++c)
       stats.simplices[k][c] = mpi::sumOverRanks (comm, classes[3 * k + c]);
+  classification.reset ();
+  part.reset ();
+  if (!o.raw) // the tetrahedra to rank 0, which runs the surface stage on them
+  {
+    solid.tetrahedra = mpi::gatherToRoot (comm, solid.tetrahedra);
+    solid.in_x = mpi::gatherToRoot (comm, solid.in_x);
+  }
   stats.points_input = points_input;
   stats.points_skipped = result.skipped.size ();
   stats.points_duplicate = result.duplicates.size ();
   stats.points_hidden = result.hidden.size ();
   stats.points_used = points_kept - mpi::sumOverRanks (comm, hidden.size ());
   stats.triangulation_dimension = dimension;
-  stats.collapses = mpi::sumOverRanks (comm, retraction.collapses ());
-  for (int k = 0; k <= 3; ++k)
-    stats.x_simplices[k] = mpi::sumOverRanks (comm, wrap.x_count[k]);
-  stats.w_triangles = result.w.triangles.size ();
-  stats.w_dangling_edges = result.w.dangling_edges.size ();
-  stats.w_isolated_vertices = result.w.isolated_vertices.size ();
+  stats.collapses = collapses;
   // Each stage's time is the slowest rank's: the others wait for it at the next exchange.
-  stats.total_seconds = 0;
   for (StageTiming& t : stats.timings)
-    stats.total_seconds += t.seconds = mpi::largestOverRanks (comm, t.seconds);
+    t.seconds = mpi::largestOverRanks (comm, t.seconds);
 
   std::vector<double> peaks = mpi::gatherToRoot (comm, std::vector<double>{peakMegabytes ()});
   const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);
   const std::size_t bytes = mpi::sumOverRanks (comm, completion.bytes_sent);
   const std::size_t questions = mpi::sumOverRanks (comm, completion.questions);
-  const std::size_t removals = mpi::sumOverRanks (comm, retraction.removalsSent ());
   if (rank != 0)
     return 0;
 
   // Rank 0 writes the one mesh, over every input point (read again, now that the tile's work is
-  // done and freed).
-  apps::writeSurfaceMesh (o.output, source.readAll (), result);
+  // done and freed), after running the surface stage on every tile's tetrahedra.
+  const apps::PointFile points = source.readAll ();
+  if (!o.raw)
+    mpi::defaultSurfaceOnRoot (points, result.hidden, std::move (solid), sheets, result.w, result, clock);
+  stats.w_triangles = result.surface.triangles.size ();
+  stats.w_dangling_edges = result.surface.dangling_edges.size ();
+  stats.w_isolated_vertices = result.surface.isolated_vertices.size ();
+  stats.total_seconds = 0;
+  for (const StageTiming& t : stats.timings)
+    stats.total_seconds += t.seconds;
+  apps::writeSurfaceMesh (o.output, points, result);
   if (!o.complex_json.empty ())
     apps::writeAtomically (o.complex_json,
                            [&] (std::ostream& out) { apps::writeComplexJson (out, result, points_input); });
@@ -280,7 +305,7 @@ run (const Options& o, MPI_Comm comm)
     std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / points_kept
               << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent, "
               << questions << " tetrahedra asked about\n"
-              << "retraction:    " << retraction.rounds () << " rounds, " << removals << " removals sent\n"
+              << "retraction:    " << retraction_rounds << " rounds, " << removals << " removals sent\n"
               << "peak memory:   ";
     for (std::size_t r = 0; r < peaks.size (); ++r)
       std::cout << (r ? ", " : "") << static_cast<long> (peaks[r]) << " MB";

@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#include "gathered_surface.h"
+
+#include "delaunay/input_points.h"
+#include "delaunay/regular_triangulation.h"
+#include "delaunay/tetrahedra.h"
+#include "delaunay/z_order.h"
+#include "input_indices.h"
+#include "surface/default_surface.h"
+#include "surface/solid_labelling.h"
+#include "util/parallel_for_each.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace pcl_wrap::mpi
+{
+namespace
+{
+
+constexpr std::uint32_t NONE = ~std::uint32_t (0);
+
+/** The even permutation of \a v that puts its smallest id first and the next smallest second:
+  * the order in which triangulate() lists a tetrahedron's vertices, still positively oriented. */
+std::array<std::uint32_t, 4>
+canonical (std::array<std::uint32_t, 4> v)
+{
+  int swaps = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3 - i; ++j)
+      if (v[j] > v[j + 1])
+      {
+        std::swap (v[j], v[j + 1]);
+        ++swaps;
+      }
+  if (swaps % 2)
+    std::swap (v[2], v[3]);
+  return v;
+}
+
+/** Per tetrahedron of \a top, the tetrahedron across the facet opposite each local vertex, or
+  * NO_NEIGHBOUR on the hull: the facets bucketed by their lowest vertex, and matched in each
+  * bucket by their other two. */
+detail::FilledInParallel<std::uint32_t>
+neighboursOf (const detail::FilledInParallel<std::uint32_t>& top, std::size_t num_vertices)
+{
+  struct Facet
+  {
+    std::array<std::uint32_t, 2> rest; // its other two vertices, ascending
+    std::uint32_t slot;                // 4 t + i
+    bool operator<(const Facet& o) const { return rest < o.rest; }
+  };
+  detail::FilledInParallel<std::uint32_t> across (top.size (), detail::NO_NEIGHBOUR);
+  std::vector<std::size_t> begin;
+  detail::bucketInParallel<Facet> (
+      top.size (), num_vertices,
+      [&] (std::size_t slot, auto put) {
+        const std::size_t t = slot / 4, i = slot % 4;
+        std::array<std::uint32_t, 3> f{top[4 * t + (i + 1) % 4], top[4 * t + (i + 2) % 4], top[4 * t + (i + 3) % 4]};
+        std::sort (f.begin (), f.end ());
+        put (f[0], Facet{{f[1], f[2]}, static_cast<std::uint32_t> (slot)});
+      },
+      begin,
+      [&] (std::size_t, auto first, auto last) {
+        std::sort (first, last);
+        for (auto f = first; f != last && f + 1 != last; ++f)
+          if (f->rest == (f + 1)->rest)
+          {
+            across[f->slot] = (f + 1)->slot / 4;
+            across[(f + 1)->slot] = f->slot / 4;
+          }
+      });
+  return across;
+}
+
+/** Flags, in \a members, the simplex with the vertex ids \a v (ascending, \a n of them) and its
+  * faces, found among the tetrahedra around its first vertex. */
+void
+flagWithFaces (const detail::Tetrahedra& tetrahedra, const std::uint32_t* v, int n, detail::Star& star,
+               std::array<std::vector<std::uint8_t>, 4>& members)
+{
+  const detail::SimplicialComplex& complex = tetrahedra.complex ();
+  tetrahedra.gatherStar (v[0], star);
+  for (std::uint32_t t : star.tetrahedra ())
+  {
+    unsigned mask = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < n; ++j)
+        mask |= tetrahedra.vertex (t, i) == v[j] ? 1u << i : 0u;
+    if (__builtin_popcount (mask) != n)
+      continue;
+    for (unsigned sub = mask; sub != 0; sub = (sub - 1) & mask)
+    {
+      const detail::Simplex f = complex.face (3, t, sub);
+      members[f.dim][f.id] = 1;
+    }
+    return;
+  }
+}
+
+} // namespace
+
+TileSolid
+tileSolid (const TileComplex& tile, const detail::Subcomplex& y)
+{
+  const detail::SimplicialComplex& complex = tile.complex ();
+  TileSolid out;
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    if (tile.belongsHere ({3, t}))
+    {
+      const std::uint32_t* v = complex.vertices (3, t);
+      out.tetrahedra.push_back ({tile.indexOf (v[0]), tile.indexOf (v[1]), tile.indexOf (v[2]), tile.indexOf (v[3])});
+      out.in_x.push_back (y.contains ({3, t}));
+    }
+  return out;
+}
+
+void
+defaultSurfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid solid,
+                      const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
+                      WrapResult& result, detail::StageClock& clock)
+{
+  // The points and vertex ids of one process: S selected from the file, then the vertices (the
+  // points not hidden) numbered along the Z-order curve of S.
+  const detail::InputPoints input = detail::selectInputPoints (file.points, file.weights);
+  std::vector<std::uint8_t> is_hidden (file.points.size (), 0);
+  for (PointIndex h : hidden)
+    is_hidden[h] = 1;
+  std::vector<std::uint32_t> vertex_of_index (file.points.size (), NONE);
+  std::vector<Point3> positions;
+  std::vector<double> weights;
+  std::vector<PointIndex> input_of_vertex;
+  for (std::uint32_t p : detail::zOrder (input.positions))
+    if (!is_hidden[input.input_index[p]])
+    {
+      vertex_of_index[input.input_index[p]] = static_cast<std::uint32_t> (positions.size ());
+      positions.push_back (input.positions[p]);
+      weights.push_back (input.weights[p]);
+      input_of_vertex.push_back (input.input_index[p]);
+    }
+  const auto vertex = [&] (std::uint32_t index) {
+    if (index >= vertex_of_index.size () || vertex_of_index[index] == NONE)
+      throw std::runtime_error ("a tile sent a simplex on a point that is not a vertex");
+    return vertex_of_index[index];
+  };
+
+  // The tetrahedra in triangulate()'s order: each in its canonical permutation, sorted by lowest
+  // vertex, then by the other three as a set.
+  const std::size_t n = solid.tetrahedra.size ();
+  detail::FilledInParallel<std::uint32_t> canon (4 * n);
+  detail::parallelForEach (n, [&] (std::size_t t) {
+    const auto& s = solid.tetrahedra[t];
+    const auto v = canonical ({vertex (s[0]), vertex (s[1]), vertex (s[2]), vertex (s[3])});
+    std::copy (v.begin (), v.end (), &canon[4 * t]);
+  });
+  struct Keyed
+  {
+    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
+    std::uint32_t tetrahedron;
+    bool operator<(const Keyed& o) const { return key < o.key; }
+  };
+  std::vector<std::size_t> begin;
+  const auto keyed = detail::bucketInParallel<Keyed> (
+      n, positions.size (),
+      [&] (std::size_t t, auto put) {
+        const std::uint32_t* v = &canon[4 * t];
+        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (t)});
+      },
+      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
+  detail::FilledInParallel<std::uint32_t> top (4 * n);
+  std::vector<std::uint8_t> x_tetrahedra (n);
+  detail::parallelForEach (n, [&] (std::size_t r) {
+    const std::uint32_t t = keyed[r].tetrahedron;
+    std::copy (&canon[4 * t], &canon[4 * t] + 4, &top[4 * r]);
+    x_tetrahedra[r] = solid.in_x[t];
+  });
+  solid = {};
+  canon = {};
+  detail::Tetrahedra adjacency (neighboursOf (top, positions.size ()));
+  const detail::SimplicialComplex complex (3, static_cast<std::uint32_t> (positions.size ()), std::move (top),
+                                           adjacency.neighbourArray ());
+  adjacency.attach (complex);
+
+  // X: the closure of its tetrahedra and of W's simplices on none of them.
+  std::array<std::vector<std::uint8_t>, 4> members = detail::solidSubcomplex (complex, x_tetrahedra);
+  detail::Star star;
+  for (const auto& s : sheets)
+  {
+    std::array<std::uint32_t, 3> v{vertex (s[0]), vertex (s[1]), vertex (s[2])};
+    std::sort (v.begin (), v.end ());
+    flagWithFaces (adjacency, v.data (), 3, star, members);
+  }
+  for (const auto& e : raw_w.dangling_edges)
+  {
+    std::array<std::uint32_t, 2> v{vertex (e[0]), vertex (e[1])};
+    std::sort (v.begin (), v.end ());
+    flagWithFaces (adjacency, v.data (), 2, star, members);
+  }
+  for (PointIndex i : raw_w.isolated_vertices)
+    members[0][vertex (i)] = 1;
+  const detail::Subcomplex x (complex, members);
+  members = {};
+  clock.stageDone ("tetrahedra");
+
+  detail::DefaultSurface stage (complex.vertexArray (3), adjacency, positions, weights, false);
+  detail::DefaultSurface::Output out = stage.surface (x, positions, false, file.viewpoint, result.statistics, clock);
+  detail::InputIndices indices (std::move (input_of_vertex));
+  if (out.split)
+  {
+    detail::ManifoldSplit& split = *out.split;
+    out.w.triangles = std::move (split.triangles);
+    result.copies = indices.appendCopies (split.copy_of, file.points.size ());
+    result.statistics.pinch_edges_split = split.pinch_edges;
+    result.statistics.pinch_vertices_split = split.pinch_vertices;
+    result.statistics.sheet_triangles_doubled = split.sheet_triangles;
+  }
+  result.surface = indices.surface (out.w);
+  clock.stageDone ("output");
+}
+
+} // namespace pcl_wrap::mpi

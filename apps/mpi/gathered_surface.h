@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "tile_complex.h"
+
+#include "point_file.h"
+
+#include "util/stage_clock.h"
+#include "wrap/subcomplex.h"
+
+#include <pcl_wrap/compute_wrap.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::mpi
+{
+
+/** \brief The tetrahedra of Del S that belong to one tile, in indices of S, positively oriented,
+  * and whether each is in X: what the tile sends rank 0 for the default surface. */
+struct TileSolid
+{
+  std::vector<std::array<std::uint32_t, 4>> tetrahedra;
+  std::vector<std::uint8_t> in_x;
+};
+
+/** \brief This tile's part of Del S's tetrahedra, and of X's (the retracted \a y). */
+TileSolid
+tileSolid (const TileComplex& tile, const detail::Subcomplex& y);
+
+/** \brief The default surface (docs/surface.md), on rank 0, from every tile's TileSolid.
+  *
+  * The surface stage runs as in one process, on the same numbering: the points are selected
+  * from \a file as pcl_wrap selects them, the vertices (all but the \a hidden points) numbered
+  * along the same Z-order curve, the tetrahedra sorted by their vertex sets and each turned to
+  * the same even permutation of its vertices. X is the closure of its tetrahedra and of W's
+  * simplices on none of them (the sheets, dangling edges and isolated vertices of \a raw_w, all
+  * in indices of S). So the output is pcl_wrap's, triangle for triangle.
+  * \param[in] tetrahedra every tile's, in any order
+  * \param[in,out] result its surface, copies and statistics of the surface stage set */
+void
+defaultSurfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid tetrahedra,
+                      const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
+                      WrapResult& result, detail::StageClock& clock);
+
+} // namespace pcl_wrap::mpi
