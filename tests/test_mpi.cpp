@@ -253,22 +253,25 @@ TEST (Mpi, OutputOverTheInputIsRefused)
   EXPECT_EQ (readFile (cloud), before);
 }
 
-/** pcl_wrap's default surface on \a cloud, as it writes it to \a mesh. */
+/** pcl_wrap's output on \a cloud (the default surface unless \a parameters say otherwise), as it
+  * writes it to \a mesh. */
 void
-writeSingleProcessSurface (const fs::path& cloud, const fs::path& mesh, bool weights_column)
+writeSingleProcessSurface (const fs::path& cloud, const fs::path& mesh, bool weights_column,
+                           WrapParameters parameters = {})
 {
   const apps::PointFile file = apps::readPointFile (cloud.string (), "", weights_column);
-  WrapParameters parameters;
   parameters.viewpoint = file.viewpoint;
   apps::writeSurfaceMesh (mesh.string (), file, computeWrap (file.points, file.weights, parameters));
 }
 
-/** The default surface on \a ranks ranks is the single process's, byte for byte. */
+/** The default surface (or what \a options ask for, as \a parameters do) on \a ranks ranks is the
+  * single process's, byte for byte. */
 void
-expectIdenticalSurface (const fs::path& cloud, std::vector<int> rank_counts = {1, 2, 3, 4}, bool weights_column = false)
+expectIdenticalSurface (const fs::path& cloud, std::vector<int> rank_counts = {1, 2, 3, 4}, bool weights_column = false,
+                        const std::string& options = "", const WrapParameters& parameters = {})
 {
   const fs::path expected = scratch () / (cloud.stem ().string () + "_single.ply");
-  writeSingleProcessSurface (cloud, expected, weights_column);
+  writeSingleProcessSurface (cloud, expected, weights_column, parameters);
   const std::string single = readFile (expected);
   ASSERT_GT (single.size (), 100u);
   for (int ranks : rank_counts)
@@ -277,11 +280,12 @@ expectIdenticalSurface (const fs::path& cloud, std::vector<int> rank_counts = {1
     const fs::path log = scratch () / "surface.log";
     ASSERT_EQ (runMpi (ranks,
                        cloud.string () + " " + mesh.string () + " --quiet" +
-                           (weights_column ? " --weights-column" : ""),
+                           (weights_column ? " --weights-column" : "") + options,
                        log),
                0)
         << readFile (log);
-    EXPECT_TRUE (readFile (mesh) == single) << cloud << " on " << ranks << " ranks: the default surface differs";
+    EXPECT_TRUE (readFile (mesh) == single)
+        << cloud << " on " << ranks << " ranks" << options << ": the output differs";
   }
 }
 
@@ -326,6 +330,47 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnASingleLayerAndOddInput)
   for (double& w : weights)
     w = weight (random);
   expectIdenticalSurface (writeCloud ("weighted_surface", weighted, weights), {2}, true);
+}
+
+TEST (Mpi, ThresholdsAreTheSingleProcesss)
+{
+  // Rank 0 deletes the sinks as one process does, for the raw W and under the default surface;
+  // each threshold here changes the output, so an ignored one would show.
+  const fs::path bunny = fs::path (PCL_WRAP_DATA_DIR) / "bunny00.off";
+  const auto changes = [&] (const fs::path& cloud, WrapParameters without, const WrapParameters& with) {
+    without.output = with.output;
+    const fs::path a = scratch () / "without.ply", b = scratch () / "with.ply";
+    writeSingleProcessSurface (cloud, a, false, without);
+    writeSingleProcessSurface (cloud, b, false, with);
+    return readFile (a) != readFile (b);
+  };
+  WrapParameters global;
+  global.output = Output::raw;
+  global.threshold = Threshold::relativeRadius (4);
+  global.deletion = SinkDeletion::global;
+  EXPECT_TRUE (changes (bunny, {}, global));
+  expectIdenticalSurface (bunny, {2, 3}, false, " --raw --radius-rel 4 --mode global", global);
+
+  WrapParameters front;
+  front.threshold = Threshold::relativeRadius (4);
+  EXPECT_TRUE (changes (bunny, {}, front));
+  expectIdenticalSurface (bunny, {2}, false, " --radius-rel 4", front);
+
+  const fs::path torus = writeCloud ("torus_sinks", test::torusSample (3000, 21));
+  WrapParameters largest;
+  largest.output = Output::raw;
+  largest.threshold = Threshold::largest (3);
+  EXPECT_TRUE (changes (torus, {}, largest));
+  expectIdenticalSurface (torus, {2}, false, " --raw --sinks 3", largest);
+}
+
+TEST (Mpi, ThresholdWithComplexOrTwoThresholdsIsAUsageError)
+{
+  const fs::path cloud = writeCloud ("usage", test::cubeSample (50, 12)), log = scratch () / "usage.log";
+  EXPECT_EQ (runMpi (2, cloud.string () + " u.ply --sinks 2 --complex u.json", log), 2);
+  EXPECT_NE (readFile (log).find ("--complex"), std::string::npos) << readFile (log);
+  EXPECT_EQ (runMpi (2, cloud.string () + " u.ply --sinks 2 --delta 1", log), 2);
+  EXPECT_EQ (runMpi (2, cloud.string () + " u.ply --sinks 0", log), 2);
 }
 
 } // namespace

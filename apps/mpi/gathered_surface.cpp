@@ -3,6 +3,7 @@
 #include "gathered_surface.h"
 
 #include "delaunay/input_points.h"
+#include "delaunay/power_predicates.h"
 #include "delaunay/regular_triangulation.h"
 #include "delaunay/tetrahedra.h"
 #include "delaunay/z_order.h"
@@ -10,6 +11,9 @@
 #include "surface/default_surface.h"
 #include "surface/solid_labelling.h"
 #include "util/parallel_for_each.h"
+#include "wrap/boundary.h"
+#include "wrap/classification.h"
+#include "wrap/sink_deletion.h"
 
 #include <algorithm>
 #include <utility>
@@ -117,9 +121,9 @@ tileSolid (const TileComplex& tile, const detail::Subcomplex& y)
 }
 
 void
-defaultSurfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid solid,
-                      const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
-                      WrapResult& result, detail::StageClock& clock)
+surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid solid,
+               const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
+               const WrapParameters& parameters, WrapResult& result, detail::StageClock& clock)
 {
   // The points and vertex ids of one process: S selected from the file, then the vertices (the
   // points not hidden) numbered along the Z-order curve of S.
@@ -199,21 +203,40 @@ defaultSurfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>
   }
   for (PointIndex i : raw_w.isolated_vertices)
     members[0][vertex (i)] = 1;
-  const detail::Subcomplex x (complex, members);
+  detail::Subcomplex x (complex, members);
   members = {};
   clock.stageDone ("tetrahedra");
+  detail::InputIndices indices (std::move (input_of_vertex));
+  WrapStatistics& stats = result.statistics;
+  if (parameters.threshold.deletes ())
+  {
+    // The sink deletion of one process (design.md §9) on the same complex and X, the classes
+    // found again from the same predicates.
+    const detail::PowerPredicates predicates (positions, weights);
+    const detail::Classification classification = detail::classify (complex, predicates);
+    detail::deleteSinks (complex, classification, positions, weights, parameters, nullptr, x, stats);
+    for (int k = 0; k <= 3; ++k)
+      stats.x_simplices[k] = x.size (k);
+    clock.stageDone ("deletion");
+  }
+  if (parameters.output == Output::raw)
+  {
+    result.surface =
+        indices.surface (detail::extractBoundary (complex, x, true, [&] (std::uint32_t v) { return indices (v); }));
+    clock.stageDone ("output");
+    return;
+  }
 
   detail::DefaultSurface stage (complex.vertexArray (3), adjacency, positions, weights, false);
   detail::DefaultSurface::Output out = stage.surface (x, positions, false, file.viewpoint, result.statistics, clock);
-  detail::InputIndices indices (std::move (input_of_vertex));
   if (out.split)
   {
     detail::ManifoldSplit& split = *out.split;
     out.w.triangles = std::move (split.triangles);
     result.copies = indices.appendCopies (split.copy_of, file.points.size ());
-    result.statistics.pinch_edges_split = split.pinch_edges;
-    result.statistics.pinch_vertices_split = split.pinch_vertices;
-    result.statistics.sheet_triangles_doubled = split.sheet_triangles;
+    stats.pinch_edges_split = split.pinch_edges;
+    stats.pinch_vertices_split = split.pinch_vertices;
+    stats.sheet_triangles_doubled = split.sheet_triangles;
   }
   result.surface = indices.surface (out.w);
   clock.stageDone ("output");

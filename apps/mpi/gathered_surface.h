@@ -10,6 +10,7 @@
 #include "wrap/subcomplex.h"
 
 #include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/wrap_parameters.h>
 
 #include <array>
 #include <cstdint>
@@ -30,19 +31,21 @@ struct TileSolid
 TileSolid
 tileSolid (const TileComplex& tile, const detail::Subcomplex& y);
 
-/** \brief The default surface (docs/surface.md), on rank 0, from every tile's TileSolid.
+/** \brief On rank 0, from every tile's TileSolid: pcl_wrap's output after the construction, the
+  * sink deletion of a threshold (if \a parameters set one) and the default surface
+  * (docs/surface.md), or the paper's W (Output::raw).
   *
-  * The surface stage runs as in one process, on the same numbering: the points are selected
-  * from \a file as pcl_wrap selects them, the vertices (all but the \a hidden points) numbered
-  * along the same Z-order curve, the tetrahedra sorted by their vertex sets and each turned to
-  * the same even permutation of its vertices. X is the closure of its tetrahedra and of W's
-  * simplices on none of them (the sheets, dangling edges and isolated vertices of \a raw_w, all
-  * in indices of S). So the output is pcl_wrap's, triangle for triangle.
-  * \param[in] tetrahedra every tile's, in any order
-  * \param[in,out] result its surface, copies and statistics of the surface stage set */
+  * These run as in one process, on the same numbering: the points are selected from \a file as
+  * pcl_wrap selects them, the vertices (all but the \a hidden points) numbered along the same
+  * Z-order curve, the tetrahedra sorted by their vertex sets and each turned to the same even
+  * permutation of its vertices. X is the closure of its tetrahedra and of W's simplices on none of
+  * them (the \a sheets, and the dangling edges and isolated vertices of \a raw_w, all in indices
+  * of S). So the output is pcl_wrap's, triangle for triangle.
+  * \param[in] solid every tile's, in any order
+  * \param[in,out] result its surface, copies and statistics of these stages set */
 void
-defaultSurfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid tetrahedra,
-                      const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
-                      WrapResult& result, detail::StageClock& clock);
+surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid solid,
+               const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,
+               const WrapParameters& parameters, WrapResult& result, detail::StageClock& clock);
 
 } // namespace pcl_wrap::mpi

@@ -30,6 +30,7 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -47,6 +48,7 @@ struct Options
   std::string input, output, stats_json, complex_json;
   bool raw = false, stats = false, quiet = false, weights_column = false;
   std::string weight_field;
+  WrapParameters parameters; ///< the threshold and deletion mode
 };
 
 const char* const USAGE =
@@ -56,6 +58,9 @@ const char* const USAGE =
     "their names as one (docs/mpi.md).\n"
     "  --raw                 the paper's W = Bd X, as pcl_wrap --raw (default: pcl_wrap's default\n"
     "                        surface, its surface stage run by rank 0 on the gathered tetrahedra)\n"
+    "  --delta D, --radius R, --radius-rel K, --sinks J, --mode front|global\n"
+    "                        wrap tighter, as pcl_wrap does (rank 0 deletes the sinks, as it runs\n"
+    "                        the surface stage)\n"
     "  --stats               print what the construction did, per tile and in total\n"
     "  --stats-json FILE     the statistics as JSON, as pcl_wrap writes them\n"
     "  --complex FILE        X and W as JSON, as pcl_wrap --complex writes them (no classes)\n"
@@ -75,6 +80,7 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
     return false;
   };
   std::vector<std::string> positional;
+  int thresholds = 0;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -93,6 +99,32 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
     }
     else if (arg == "--raw")
       o.raw = true;
+    else if (arg == "--delta" || arg == "--radius" || arg == "--radius-rel" || arg == "--sinks" || arg == "--mode")
+    {
+      std::string v;
+      if (!value (v))
+        return usageError (arg + " needs a value");
+      if (arg == "--mode")
+      {
+        if (v != "front" && v != "global")
+          return usageError ("--mode takes front or global");
+        o.parameters.deletion = v == "front" ? SinkDeletion::front : SinkDeletion::global;
+        continue;
+      }
+      char* end = nullptr;
+      const double x = std::strtod (v.c_str (), &end);
+      if (v.empty () || *end != '\0' || !std::isfinite (x) || (arg != "--delta" && x <= 0) ||
+          (arg == "--sinks" && (x != std::floor (x) || x > 1e15)))
+        return usageError (arg + (arg == "--sinks"   ? " takes a whole number >= 1"
+                                  : arg == "--delta" ? " takes a finite number"
+                                                     : " takes a finite number > 0"));
+      if (++thresholds > 1)
+        return usageError ("--delta, --radius, --radius-rel and --sinks each set the threshold: give one");
+      o.parameters.threshold = arg == "--radius-rel" ? Threshold::relativeRadius (x)
+                               : arg == "--radius"   ? Threshold::radius (x)
+                               : arg == "--sinks"    ? Threshold::largest (static_cast<std::size_t> (x))
+                                                     : Threshold::size (x);
+    }
     else if (arg == "--stats")
       o.stats = true;
     else if (arg == "--quiet")
@@ -112,6 +144,9 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
   }
   if (positional.size () != 2)
     return usageError ("give an input file and an output file");
+  if (o.parameters.threshold.deletes () && !o.complex_json.empty ())
+    return usageError ("--complex lists X before a threshold's deletion: give one or the other");
+  o.parameters.output = o.raw ? Output::raw : Output::surface;
   o.input = positional[0];
   o.output = positional[1];
   if (!apps::isMeshFormat (o.output))
@@ -217,7 +252,9 @@ run (const Options& o, MPI_Comm comm)
   }
   clock.stageDone ("classification");
 
-  mpi::TileSolid solid; // for the default surface
+  // The default surface, and a threshold's deletion, run on rank 0 from every tile's tetrahedra.
+  const bool on_root = !o.raw || o.parameters.threshold.deletes ();
+  mpi::TileSolid solid;
   std::vector<std::array<std::uint32_t, 3>> sheets;
   std::uint64_t collapses = 0, removals = 0;
   std::size_t retraction_rounds = 0;
@@ -238,7 +275,7 @@ run (const Options& o, MPI_Comm comm)
     result.surface = result.w;
     for (int k = 0; k <= 3; ++k)
       stats.x_simplices[k] = mpi::sumOverRanks (comm, wrap.x_count[k]);
-    if (!o.raw)
+    if (on_root)
     {
       sheets = mpi::gatherToRoot (comm, wrap.sheets);
       solid = mpi::tileSolid (*part, y);
@@ -258,7 +295,7 @@ run (const Options& o, MPI_Comm comm)
       stats.simplices[k][c] = mpi::sumOverRanks (comm, classes[3 * k + c]);
   classification.reset ();
   part.reset ();
-  if (!o.raw) // the tetrahedra to rank 0, which runs the surface stage on them
+  if (on_root) // the tetrahedra to rank 0, which runs the surface stage on them
   {
     solid.tetrahedra = mpi::gatherToRoot (comm, solid.tetrahedra);
     solid.in_x = mpi::gatherToRoot (comm, solid.in_x);
@@ -284,8 +321,8 @@ run (const Options& o, MPI_Comm comm)
   // Rank 0 writes the one mesh, over every input point (read again, now that the tile's work is
   // done and freed), after running the surface stage on every tile's tetrahedra.
   const apps::PointFile points = source.readAll ();
-  if (!o.raw)
-    mpi::defaultSurfaceOnRoot (points, result.hidden, std::move (solid), sheets, result.w, result, clock);
+  if (on_root)
+    mpi::surfaceOnRoot (points, result.hidden, std::move (solid), sheets, result.w, o.parameters, result, clock);
   stats.w_triangles = result.surface.triangles.size ();
   stats.w_dangling_edges = result.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result.surface.isolated_vertices.size ();
