@@ -4,6 +4,7 @@
 // pcl_wrap INPUT OUTPUT [options]: wraps the points of INPUT and writes the surface to OUTPUT.
 #include "mesh_file.h"
 #include "point_file.h"
+#include "threshold_option.h"
 #include "wrap_report.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -159,34 +160,12 @@ parseOptions (int argc, char** argv)
       o.progress = true;
     else if (arg == "--weights-column")
       o.weights_column = true;
-    else if (arg == "--delta" || arg == "--radius" || arg == "--radius-rel")
+    else if (apps::isThresholdOption (arg))
     {
-      const std::string v = value ();
-      char* end = nullptr;
-      const double x = std::strtod (v.c_str (), &end);
-      if (v.empty () || *end != '\0' || !std::isfinite (x) || (arg != "--delta" && x <= 0))
-        usageError (arg + " takes a finite number" + (arg == "--delta" ? "" : " > 0"));
-      o.parameters.threshold = arg == "--radius-rel" ? Threshold::relativeRadius (x)
-                             : arg == "--radius"     ? Threshold::radius (x)
-                                                     : Threshold::size (x);
-      ++o.thresholds;
-    }
-    else if (arg == "--mode")
-    {
-      const std::string v = value ();
-      if (v != "front" && v != "global")
-        usageError ("--mode takes front or global");
-      o.parameters.deletion = v == "front" ? SinkDeletion::front : SinkDeletion::global;
-    }
-    else if (arg == "--sinks")
-    {
-      const std::string v = value ();
-      char* end = nullptr;
-      const long long j = std::strtoll (v.c_str (), &end, 10);
-      if (v.empty () || *end != '\0' || j < 1)
-        usageError ("--sinks takes a whole number >= 1");
-      o.parameters.threshold = Threshold::largest (static_cast<std::size_t> (j));
-      ++o.thresholds;
+      const std::string error = apps::applyThresholdOption (arg, value (), o.parameters);
+      if (!error.empty ())
+        usageError (error);
+      o.thresholds += arg != "--mode";
     }
     else if (arg == "--region")
     {

@@ -25,24 +25,6 @@ namespace
 
 constexpr std::uint32_t NONE = ~std::uint32_t (0);
 
-/** The even permutation of \a v that puts its smallest id first and the next smallest second:
-  * the order in which triangulate() lists a tetrahedron's vertices, still positively oriented. */
-std::array<std::uint32_t, 4>
-canonical (std::array<std::uint32_t, 4> v)
-{
-  int swaps = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3 - i; ++j)
-      if (v[j] > v[j + 1])
-      {
-        std::swap (v[j], v[j + 1]);
-        ++swaps;
-      }
-  if (swaps % 2)
-    std::swap (v[2], v[3]);
-  return v;
-}
-
 /** Per tetrahedron of \a top, the tetrahedron across the facet opposite each local vertex, or
   * NO_NEIGHBOUR on the hull: the facets bucketed by their lowest vertex, and matched in each
   * bucket by their other two. */
@@ -149,33 +131,22 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
     return vertex_of_index[index];
   };
 
-  // The tetrahedra in triangulate()'s order: each in its canonical permutation, sorted by lowest
-  // vertex, then by the other three as a set.
+  // The tetrahedra in triangulate()'s order: each in its canonical permutation, sorted by
+  // vertex set.
   const std::size_t n = solid.tetrahedra.size ();
   detail::FilledInParallel<std::uint32_t> canon (4 * n);
   detail::parallelForEach (n, [&] (std::size_t t) {
     const auto& s = solid.tetrahedra[t];
-    const auto v = canonical ({vertex (s[0]), vertex (s[1]), vertex (s[2]), vertex (s[3])});
-    std::copy (v.begin (), v.end (), &canon[4 * t]);
+    const std::uint32_t v[4] = {vertex (s[0]), vertex (s[1]), vertex (s[2]), vertex (s[3])};
+    const std::array<int, 4> p = detail::canonicalOrder (v);
+    for (int i = 0; i < 4; ++i)
+      canon[4 * t + i] = v[p[i]];
   });
-  struct Keyed
-  {
-    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
-    std::uint32_t tetrahedron;
-    bool operator<(const Keyed& o) const { return key < o.key; }
-  };
-  std::vector<std::size_t> begin;
-  const auto keyed = detail::bucketInParallel<Keyed> (
-      n, positions.size (),
-      [&] (std::size_t t, auto put) {
-        const std::uint32_t* v = &canon[4 * t];
-        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (t)});
-      },
-      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
+  const detail::FilledInParallel<std::uint32_t> order = detail::tetrahedronOrder (canon, positions.size ());
   detail::FilledInParallel<std::uint32_t> top (4 * n);
   std::vector<std::uint8_t> x_tetrahedra (n);
   detail::parallelForEach (n, [&] (std::size_t r) {
-    const std::uint32_t t = keyed[r].tetrahedron;
+    const std::uint32_t t = order[r];
     std::copy (&canon[4 * t], &canon[4 * t] + 4, &top[4 * r]);
     x_tetrahedra[r] = solid.in_x[t];
   });

@@ -14,6 +14,7 @@
 
 #include "mesh_file.h"
 #include "point_file.h"
+#include "threshold_option.h"
 #include "wrap_report.h"
 
 #include "delaunay/power_predicates.h"
@@ -30,7 +31,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -99,31 +99,16 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
     }
     else if (arg == "--raw")
       o.raw = true;
-    else if (arg == "--delta" || arg == "--radius" || arg == "--radius-rel" || arg == "--sinks" || arg == "--mode")
+    else if (apps::isThresholdOption (arg))
     {
       std::string v;
       if (!value (v))
         return usageError (arg + " needs a value");
-      if (arg == "--mode")
-      {
-        if (v != "front" && v != "global")
-          return usageError ("--mode takes front or global");
-        o.parameters.deletion = v == "front" ? SinkDeletion::front : SinkDeletion::global;
-        continue;
-      }
-      char* end = nullptr;
-      const double x = std::strtod (v.c_str (), &end);
-      if (v.empty () || *end != '\0' || !std::isfinite (x) || (arg != "--delta" && x <= 0) ||
-          (arg == "--sinks" && (x != std::floor (x) || x > 1e15)))
-        return usageError (arg + (arg == "--sinks"   ? " takes a whole number >= 1"
-                                  : arg == "--delta" ? " takes a finite number"
-                                                     : " takes a finite number > 0"));
-      if (++thresholds > 1)
+      const std::string error = apps::applyThresholdOption (arg, v, o.parameters);
+      if (!error.empty ())
+        return usageError (error);
+      if (arg != "--mode" && ++thresholds > 1)
         return usageError ("--delta, --radius, --radius-rel and --sinks each set the threshold: give one");
-      o.parameters.threshold = arg == "--radius-rel" ? Threshold::relativeRadius (x)
-                               : arg == "--radius"   ? Threshold::radius (x)
-                               : arg == "--sinks"    ? Threshold::largest (static_cast<std::size_t> (x))
-                                                     : Threshold::size (x);
     }
     else if (arg == "--stats")
       o.stats = true;

@@ -64,26 +64,6 @@ constexpr std::uint32_t PROGRESS_ROUNDS = 20;
 // Lock grid cells per axis (CGAL's examples use 50; more cells, fewer conflicts).
 constexpr int LOCK_GRID_CELLS = 50;
 
-/** The even permutation of a tetrahedron's local vertices that puts its smallest vertex id
-  * first and the next smallest second: one canonical, still positively oriented, order. */
-std::array<int, 4>
-canonicalOrder (const std::uint32_t* v)
-{
-  std::array<int, 4> p = {0, 1, 2, 3};
-  const int low = static_cast<int> (std::min_element (v, v + 4) - v);
-  // The even permutations that move `low` to the front: swap it with 0, and two other slots.
-  if (low != 0)
-  {
-    std::swap (p[0], p[low]);
-    const int a = low == 1 ? 2 : 1, b = low == 3 ? 2 : 3;
-    std::swap (p[a], p[b]);
-  }
-  // Rotate the last three (an even permutation) until the smallest of them is second.
-  while (v[p[1]] > v[p[2]] || v[p[1]] > v[p[3]])
-    std::rotate (p.begin () + 1, p.begin () + 2, p.end ());
-  return p;
-}
-
 /** A triangulation's finite tetrahedra as read from CGAL, in CGAL's (thread-timing dependent)
   * order: each one's vertex ids in canonicalOrder, and across each of them the neighbour's
   * index in this order, or NO_NEIGHBOUR. */
@@ -128,37 +108,14 @@ readTetrahedra (const Cgal& rt, const Id& id)
   return read;
 }
 
-/** The tetrahedra \a read into \a t, in an order that depends only on the vertex ids: sorted by
-  * their vertex sets. A parallel insertion leaves CGAL's cells in an order that depends on thread
-  * timing; this keeps every later stage, and so every result, the same on any number of threads.
-  * Ordering by lowest vertex along the curve of vertex ids also keeps the tetrahedra of a
-  * neighbourhood together. */
+/** The tetrahedra \a read into \a t, in tetrahedronOrder(). */
 void
 orderTetrahedra (const CgalTetrahedra& read, Triangulation& t)
 {
   const std::size_t n = read.vertices.size () / 4;
-  // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
-  // The key travels with the tetrahedron, so that sorting a bucket reads nothing else.
-  struct Keyed
-  {
-    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
-    std::uint32_t tetrahedron;
-    bool operator< (const Keyed& o) const { return key < o.key; }
-  };
-  std::vector<std::size_t> begin;
-  auto keyed = bucketInParallel<Keyed> (
-      n, t.point_of_vertex.size (),
-      [&] (std::size_t j, auto put) {
-        const std::uint32_t* v = &read.vertices[4 * j];
-        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
-      },
-      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
-  FilledInParallel<std::uint32_t> order (n), rank (n);
-  parallelForEach (n, [&] (std::size_t r) {
-    order[r] = keyed[r].tetrahedron;
-    rank[order[r]] = static_cast<std::uint32_t> (r);
-  });
-  keyed = {};
+  const FilledInParallel<std::uint32_t> order = tetrahedronOrder (read.vertices, t.point_of_vertex.size ());
+  FilledInParallel<std::uint32_t> rank (n);
+  parallelForEach (n, [&] (std::size_t r) { rank[order[r]] = static_cast<std::uint32_t> (r); });
 
   t.top_simplices.resize (4 * n);
   t.neighbours.resize (4 * n);
@@ -364,6 +321,49 @@ private:
 };
 
 } // namespace
+
+std::array<int, 4>
+canonicalOrder (const std::uint32_t* v)
+{
+  std::array<int, 4> p = {0, 1, 2, 3};
+  const int low = static_cast<int> (std::min_element (v, v + 4) - v);
+  // The even permutations that move `low` to the front: swap it with 0, and two other slots.
+  if (low != 0)
+  {
+    std::swap (p[0], p[low]);
+    const int a = low == 1 ? 2 : 1, b = low == 3 ? 2 : 3;
+    std::swap (p[a], p[b]);
+  }
+  // Rotate the last three (an even permutation) until the smallest of them is second.
+  while (v[p[1]] > v[p[2]] || v[p[1]] > v[p[3]])
+    std::rotate (p.begin () + 1, p.begin () + 2, p.end ());
+  return p;
+}
+
+FilledInParallel<std::uint32_t>
+tetrahedronOrder (const FilledInParallel<std::uint32_t>& vertices, std::size_t num_vertices)
+{
+  // Bucket by lowest vertex, then sort each bucket by the other three (as a set).
+  // The key travels with the tetrahedron, so that sorting a bucket reads nothing else.
+  struct Keyed
+  {
+    std::array<std::uint32_t, 3> key; // the other three vertices, as a set
+    std::uint32_t tetrahedron;
+    bool operator<(const Keyed& o) const { return key < o.key; }
+  };
+  const std::size_t n = vertices.size () / 4;
+  std::vector<std::size_t> begin;
+  const auto keyed = bucketInParallel<Keyed> (
+      n, num_vertices,
+      [&] (std::size_t j, auto put) {
+        const std::uint32_t* v = &vertices[4 * j];
+        put (v[0], Keyed{{v[1], std::min (v[2], v[3]), std::max (v[2], v[3])}, static_cast<std::uint32_t> (j)});
+      },
+      begin, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
+  FilledInParallel<std::uint32_t> order (n);
+  parallelForEach (n, [&] (std::size_t r) { order[r] = keyed[r].tetrahedron; });
+  return order;
+}
 
 GrowingTriangulation::GrowingTriangulation (bool equal_weights) : equal_weights_ (equal_weights) {}
 

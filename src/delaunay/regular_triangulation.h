@@ -6,6 +6,7 @@
 
 #include <pcl_wrap/compute_wrap.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -33,6 +34,19 @@ struct Triangulation
 };
 
 constexpr std::uint32_t NO_NEIGHBOUR = ~std::uint32_t (0);
+
+/** \brief The even permutation of a tetrahedron's local vertices (ids \a v) that puts its smallest
+  * vertex id first and the next smallest second: one canonical, still positively oriented, order,
+  * in which triangulate() lists each tetrahedron's vertices. */
+std::array<int, 4>
+canonicalOrder (const std::uint32_t* v);
+
+/** \brief The order in which triangulate() lists tetrahedra (four vertex ids each, in
+  * canonicalOrder(), below \a num_vertices): by their vertex sets, lowest vertex first. It depends
+  * only on the vertex ids, not on CGAL's cells or the threads, and keeps the tetrahedra of a
+  * neighbourhood together (the ids follow a space-filling curve). Returns the index of the r-th. */
+FilledInParallel<std::uint32_t>
+tetrahedronOrder (const FilledInParallel<std::uint32_t>& vertices, std::size_t num_vertices);
 
 /** \brief Triangulates distinct, finite weighted points. With \a progress, a large input is
   * inserted in rounds, each a random sample of the points (the triangulation is the same), and

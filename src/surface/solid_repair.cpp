@@ -124,9 +124,9 @@ private:
     * first, a candidate changes side, with the pockets it would enclose and the parts it would
     * leave pinched (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its
     * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
-    * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void, so it takes one
-    * handle away and makes none: there are at most as many moves as handles. Returns the
-    * tetrahedra moved. */
+    * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void,
+    * so it takes one handle away and makes none: there are at most as many moves as handles.
+    * Returns the tetrahedra moved. */
   std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface)
   {
     const std::vector<std::uint32_t> near = verticesOnSmallHandles (surface, complex_.numVertices ());
@@ -186,9 +186,8 @@ private:
       if (move.empty ())
         continue; // its handle is cut, or the move would cut a side in two or leave a pinch
       for (std::uint32_t t : move)
-        labels_.inside[t] ^= 1u;
-      for (std::uint32_t t : move)
       {
+        labels_.inside[t] ^= 1u;
         euler_change_->changedSide (t);
         flipped_[t] = 1;
         moved.push_back (t);
@@ -209,7 +208,7 @@ private:
     for (int grown = 0; grown <= 2; ++grown)
     {
       std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search);
-      if (move.empty () || euler_change_->operator() (move, s.euler) != 1)
+      if (move.empty () || (*euler_change_) (move, s.euler) != 1)
         return {};
       for (std::uint32_t t : move)
         labels_.inside[t] ^= 1u;
