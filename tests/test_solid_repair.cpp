@@ -2,8 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
-// vertex against the surface's links found by brute force, and the join of parts cut off the
-// solid through X.
+// vertex against the surface's links found by brute force, the join of parts cut off the
+// solid through X, and the points left floating in a cut, brought back.
 #include "wrap/boundary.h"
 #include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <random>
@@ -160,26 +161,42 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
   EXPECT_GT (moved, 1000u);
 }
 
-TEST (SolidRepair, JoinsAPartCutOffTheSolidThroughX)
+/** A dense sphere's points and their X, which fills the ball. */
+class CutSphereRepair : public ::testing::Test
 {
-  // X of a dense sphere fills the ball. A slab of it cut out leaves two half balls: X, which is
-  // contractible, ties them together again.
-  const auto points = sphereSample (3000, 4, 1e-3);
-  const Pipeline p (points);
-  detail::Subcomplex x (p.complex);
-  detail::Retraction (x, p.classification).retract ();
+protected:
+  CutSphereRepair () { detail::Retraction (x, p.classification).retract (); }
+
+  const Pipeline p{sphereSample (3000, 4, 1e-3)};
+  detail::Subcomplex x{p.complex};
+};
+
+/** The tetrahedra of \a x but those of a slab around z = 0, as labels of equal margins: those whose
+  * corners' \a height (the mean or the largest of their |z|) is at most \a half_width. */
+template <class Height>
+detail::SolidLabels
+xCutBySlab (const Pipeline& p, const detail::Subcomplex& x, const Height& height, double half_width)
+{
   detail::SolidLabels labels;
-  std::size_t cut = 0;
   for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
   {
-    double z = 0;
+    std::array<double, 4> z;
     for (int i = 0; i < 4; ++i)
-      z += p.points[p.complex.vertex (3, t, i)][2] / 4;
-    const bool in_x = x.contains ({3, t});
-    labels.inside.push_back (in_x && std::abs (z) > 0.1);
+      z[i] = std::abs (p.points[p.complex.vertex (3, t, i)][2]);
+    labels.inside.push_back (x.contains ({3, t}) && height (z) > half_width);
     labels.margin.push_back (1.0f);
-    cut += in_x && !labels.inside.back ();
   }
+  return labels;
+}
+
+TEST_F (CutSphereRepair, JoinsAPartCutOffTheSolidThroughX)
+{
+  // A slab cut out of X leaves two half balls: X, which is contractible, ties them together again.
+  detail::SolidLabels labels = xCutBySlab (
+      p, x, [] (const std::array<double, 4>& z) { return (z[0] + z[1] + z[2] + z[3]) / 4; }, 0.1);
+  std::size_t cut = 0;
+  for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+    cut += x.contains ({3, t}) && !labels.inside[t];
   ASSERT_GT (cut, 100u);
   ASSERT_GE (solidParts (p.complex, labels.inside), 2u);
 
@@ -187,6 +204,35 @@ TEST (SolidRepair, JoinsAPartCutOffTheSolidThroughX)
 
   EXPECT_EQ (solidParts (p.complex, labels.inside), 1u);
   const SurfaceReport surface = describeSurface (repairedSurface (p.tetrahedra, labels.inside, repair.pinched));
+  EXPECT_TRUE (surface.closed_manifold);
+  EXPECT_EQ (surface.components, 1u);
+  EXPECT_EQ (surface.euler, 2) << "a sphere";
+}
+
+TEST_F (CutSphereRepair, BringsOnThePointsLeftFloatingInACut)
+{
+  // The same cut, but of the labelled solid's own tetrahedra: the points of the slab float in the
+  // outside, none of their tetrahedra inside. X holds them, and they come back onto the surface.
+  detail::SolidLabels labels = xCutBySlab (
+      p, x, [] (const std::array<double, 4>& z) { return *std::max_element (z.begin (), z.end ()); }, 0.2);
+  std::vector<std::uint8_t> on_solid (p.complex.numVertices (), 0);
+  for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+    for (int i = 0; i < 4 && labels.inside[t]; ++i)
+      on_solid[p.complex.vertex (3, t, i)] = 1;
+  const std::size_t floating = std::count (on_solid.begin (), on_solid.end (), 0);
+  ASSERT_GT (floating, 200u);
+
+  const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, p.points, labels);
+
+  const std::vector<Triangle> surface_triangles = repairedSurface (p.tetrahedra, labels.inside, repair.pinched);
+  std::vector<std::uint8_t> on_surface (p.complex.numVertices (), 0);
+  for (const Triangle& f : surface_triangles)
+    for (std::uint32_t v : f)
+      if (v < on_surface.size ())
+        on_surface[v] = 1;
+  // The repair then cuts the handles that paths to both halves make, which takes a few off again.
+  EXPECT_LT (std::count (on_surface.begin (), on_surface.end (), 0), floating / 20) << "of " << floating;
+  const SurfaceReport surface = describeSurface (surface_triangles);
   EXPECT_TRUE (surface.closed_manifold);
   EXPECT_EQ (surface.components, 1u);
   EXPECT_EQ (surface.euler, 2) << "a sphere";

@@ -24,6 +24,10 @@ namespace
   * objects, as close as two spacings, are apart. */
 constexpr double UNRESOLVED_GAP = 1.5;
 
+/** How many tetrahedra bringFloatingPointsOn() expands from a point, at most: a path of X's
+  * tetrahedra that reaches no further ends in a stray point's own few tetrahedra. */
+constexpr std::size_t FLOATING_REACH = 256;
+
 /** The points a join would tie together, and how far apart they are. */
 class JoinGaps
 {
@@ -83,6 +87,108 @@ inX (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t t)
     if (x.contains (tetrahedra.complex ().facet (3, t, i)))
       return true;
   return false;
+}
+
+/** Cheapest paths, by summed margins, of outside tetrahedra to the solid: one search at a time, from
+  * seeds, in scratch arrays that each search leaves as it found them. */
+class CheapestPaths
+{
+public:
+  static constexpr std::uint32_t NONE = SolidParts::NO_PART;
+
+  CheapestPaths (const Tetrahedra& tetrahedra, const SolidLabels& labels)
+    : tetrahedra_ (tetrahedra), labels_ (labels), cost_ (tetrahedra.size (), INFINITE), from_ (tetrahedra.size (), NONE)
+  {}
+
+  void seed (std::uint32_t t, double cost)
+  {
+    cost_[t] = cost;
+    reached_.push_back (t);
+    queue_.push ({cost, t});
+  }
+
+  /** Searches from the seeds through the outside tetrahedra that \a passable admits, cheapest
+    * first, and stops at the first facet from a tetrahedron a it reached to an inside one b that
+    * \a accept (a, b) takes, or after expanding \a reach tetrahedra. Returns a (NONE if none):
+    * trace() gives the path to it. */
+  template <class Passable, class Accept>
+  std::uint32_t run (const Passable& passable, const Accept& accept, std::size_t reach)
+  {
+    for (std::size_t expanded = 0; !queue_.empty () && expanded < reach;)
+    {
+      const auto [c, a] = queue_.top ();
+      queue_.pop ();
+      if (c > cost_[a])
+        continue;
+      ++expanded;
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t b = tetrahedra_.neighbour (a, i);
+        if (b == OUTSIDE_HULL)
+          continue;
+        if (labels_.inside[b])
+        {
+          if (accept (a, b))
+            return a;
+          continue;
+        }
+        const double through = c + labels_.margin[b];
+        if (through >= cost_[b] || !passable (b))
+          continue;
+        if (cost_[b] == INFINITE)
+          reached_.push_back (b);
+        cost_[b] = through;
+        from_[b] = a;
+        queue_.push ({through, b});
+      }
+    }
+    return NONE;
+  }
+
+  /** The path the search took to \a a, from a back to its seed. */
+  std::vector<std::uint32_t> trace (std::uint32_t a) const
+  {
+    std::vector<std::uint32_t> path;
+    for (std::uint32_t t = a; t != NONE; t = from_[t])
+      path.push_back (t);
+    return path;
+  }
+
+  /** Leaves the scratch arrays as they were before the seeds. */
+  void clear ()
+  {
+    for (std::uint32_t t : reached_)
+    {
+      cost_[t] = INFINITE;
+      from_[t] = NONE;
+    }
+    reached_.clear ();
+    queue_ = {};
+  }
+
+private:
+  static constexpr double INFINITE = std::numeric_limits<double>::infinity ();
+  using Entry = std::pair<double, std::uint32_t>;
+
+  const Tetrahedra& tetrahedra_;
+  const SolidLabels& labels_;
+  std::vector<double> cost_;
+  std::vector<std::uint32_t> from_, reached_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
+};
+
+/** Moves the outside tetrahedra of \a path inside. */
+void
+moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::vector<std::uint8_t>& moved_flags,
+            std::vector<std::uint32_t>& moved)
+{
+  for (std::uint32_t t : path)
+    if (!labels.inside[t])
+    {
+      labels.inside[t] = 1;
+      moved_flags[t] = 1;
+      moved.push_back (t);
+    }
 }
 
 } // namespace
@@ -145,11 +251,8 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     if (part[t] != NONE)
       members[part[t]].push_back (t);
   JoinGaps gaps (tetrahedra, positions, part);
+  CheapestPaths paths (tetrahedra, labels);
   std::vector<std::uint8_t> on_part (tetrahedra.complex ().numVertices (), 0);
-  std::vector<std::uint32_t> chain;
-  std::vector<double> cost (n, std::numeric_limits<double>::infinity ());
-  std::vector<std::uint32_t> from (n, NONE), reached;
-  using Entry = std::pair<double, std::uint32_t>;
   for (std::uint32_t p : order)
   {
     const std::uint32_t mine = joined.find (p);
@@ -159,77 +262,74 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     // tetrahedra that touch it.
     for (std::uint32_t v : corners)
       on_part[v] = !fragment;
-    const auto touches = [&] (std::uint32_t t) {
+    const auto passable = [&] (std::uint32_t t) {
       const std::uint32_t* v = tetrahedra.vertices (t);
-      return on_part[v[0]] || on_part[v[1]] || on_part[v[2]] || on_part[v[3]];
+      return inX (tetrahedra, x, t) && (fragment || on_part[v[0]] || on_part[v[1]] || on_part[v[2]] || on_part[v[3]]);
     };
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    for (std::uint32_t t : members[p])
-    {
-      cost[t] = 0;
-      reached.push_back (t);
-      queue.push ({0.0, t});
-    }
+    // A fragment joins the part it reaches first; a part of its own only one it was cut from,
+    // across a gap the sampling does not resolve.
     std::uint32_t goal = NONE;
-    while (!queue.empty () && goal == NONE)
+    const auto accept = [&] (std::uint32_t a, std::uint32_t b) {
+      if (part[b] == NONE || joined.find (part[b]) == mine)
+        return false;
+      std::vector<std::uint32_t> chain = paths.trace (a);
+      chain.push_back (b);
+      if (!fragment && !gaps.unresolved (chain, p, part[b]))
+        return false;
+      goal = part[b];
+      return true;
+    };
+    for (std::uint32_t t : members[p])
+      paths.seed (t, 0);
+    const std::uint32_t end = paths.run (passable, accept, n);
+    if (end != NONE)
     {
-      const auto [c, a] = queue.top ();
-      queue.pop ();
-      if (c > cost[a])
-        continue;
-      for (int i = 0; i < 4 && goal == NONE; ++i)
-      {
-        const std::uint32_t b = tetrahedra.neighbour (a, i);
-        if (b == OUTSIDE_HULL)
-          continue;
-        if (labels.inside[b])
-        {
-          if (part[b] == NONE || joined.find (part[b]) == mine)
-            continue;
-          // A fragment joins the part it reaches first; a part of its own only one it was cut
-          // from, across a gap the sampling does not resolve.
-          chain.assign (1, b);
-          for (std::uint32_t t = a;; t = from[t])
-          {
-            chain.push_back (t);
-            if (labels.inside[t])
-              break;
-          }
-          if (fragment || gaps.unresolved (chain, p, part[b]))
-          {
-            goal = b;
-            from[b] = a;
-          }
-          continue;
-        }
-        const double through = c + labels.margin[b];
-        if (!inX (tetrahedra, x, b) || through >= cost[b] || (!fragment && !touches (b)))
-          continue;
-        if (cost[b] == std::numeric_limits<double>::infinity ())
-          reached.push_back (b);
-        cost[b] = through;
-        from[b] = a;
-        queue.push ({through, b});
-      }
+      joined.attach (mine, goal);
+      moveInside (paths.trace (end), labels, moved_flags, moved);
     }
-    if (goal != NONE)
-    {
-      joined.attach (mine, part[goal]);
-      for (std::uint32_t t = from[goal]; !labels.inside[t]; t = from[t])
-      {
-        labels.inside[t] = 1;
-        moved_flags[t] = 1;
-        moved.push_back (t);
-      }
-    }
-    for (std::uint32_t t : reached)
-    {
-      cost[t] = std::numeric_limits<double>::infinity ();
-      from[t] = NONE;
-    }
-    reached.clear ();
+    paths.clear ();
     for (std::uint32_t v : corners)
       on_part[v] = 0;
+  }
+  return moved;
+}
+
+std::vector<std::uint32_t>
+bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels,
+                       std::vector<std::uint8_t>& moved_flags)
+{
+  constexpr std::uint32_t NONE = CheapestPaths::NONE;
+  const std::uint32_t num_vertices = tetrahedra.complex ().numVertices ();
+  std::vector<std::uint8_t> on_solid (num_vertices, 0);
+  const auto markOn = [&] (std::uint32_t t) {
+    for (int i = 0; i < 4; ++i)
+      on_solid[tetrahedra.vertex (t, i)] = 1;
+  };
+  for (std::uint32_t t = 0; t < tetrahedra.size (); ++t)
+    if (labels.inside[t])
+      markOn (t);
+  std::vector<std::uint32_t> moved;
+  CheapestPaths paths (tetrahedra, labels);
+  const auto passable = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
+  const auto accept = [] (std::uint32_t, std::uint32_t) { return true; };
+  Star star;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+  {
+    if (on_solid[v])
+      continue;
+    tetrahedra.gatherStar (v, star);
+    for (std::uint32_t t : star.tetrahedra ())
+      if (passable (t))
+        paths.seed (t, labels.margin[t]);
+    const std::uint32_t end = paths.run (passable, accept, FLOATING_REACH);
+    if (end != NONE)
+    {
+      const std::vector<std::uint32_t> path = paths.trace (end);
+      moveInside (path, labels, moved_flags, moved);
+      for (std::uint32_t t : path)
+        markOn (t);
+    }
+    paths.clear ();
   }
   return moved;
 }

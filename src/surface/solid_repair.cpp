@@ -75,6 +75,13 @@ public:
   {
     SolidRepair done;
     done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_).size ();
+    if (stays_buried_.empty ()) // not a volume, whose solid is X's
+    {
+      // The parts the labelling cut apart, joined while their fragments are small, then the points
+      // it left floating between them, brought on; the mending may cut parts apart again.
+      done.flipped += joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_).size ();
+      done.flipped += bringFloatingPointsOn (tetrahedra_, x, labels_, flipped_).size ();
+    }
     // Most vertices need nothing: find the others on all threads, then mend them in order.
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
     std::vector<std::uint32_t> work;
