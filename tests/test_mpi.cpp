@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -125,6 +126,21 @@ TEST (Mpi, RandomPointsInACube)
 TEST (Mpi, NoisySphere)
 {
   expectIdentical (writeCloud ("sphere", test::sphereSample (6000, 2, 3e-3)));
+}
+
+TEST (Mpi, ThinShellIsAnsweredByTheNearestPoint)
+{
+  // The orthosphere of four points of a thin shell is nearly the shell: it meets every box of the
+  // other tile's k-d tree though it holds none of its points, and the nearest point answers.
+  const fs::path cloud = writeCloud ("shell", test::sphereSample (8000, 6, 1e-4));
+  expectIdentical (cloud, {2, 3});
+  const fs::path log = scratch () / "shell.log";
+  ASSERT_EQ (runMpi (2, cloud.string () + " " + (scratch () / "out.ply").string () + " --raw --stats", log), 0);
+  std::smatch answered;
+  const std::string stats = readFile (log);
+  ASSERT_TRUE (std::regex_search (stats, answered, std::regex ("\\(([0-9]+) answered by the nearest point\\)")))
+      << stats;
+  EXPECT_GT (std::stoul (answered[1]), 100u) << stats;
 }
 
 TEST (Mpi, TorusWithItsTunnel)

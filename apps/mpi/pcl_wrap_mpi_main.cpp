@@ -300,6 +300,7 @@ run (const Options& o, MPI_Comm comm)
   const std::size_t ghosts = mpi::sumOverRanks (comm, completion.ghosts);
   const std::size_t bytes = mpi::sumOverRanks (comm, completion.bytes_sent);
   const std::size_t questions = mpi::sumOverRanks (comm, completion.questions);
+  const std::size_t by_nearest = mpi::sumOverRanks (comm, completion.by_nearest);
   if (rank != 0)
     return 0;
 
@@ -326,7 +327,7 @@ run (const Options& o, MPI_Comm comm)
     peaks[0] = peakMegabytes (); // with the mesh written
     std::cout << "tiles:         " << ranks << ", ghosts " << ghosts << " (" << 100.0 * ghosts / points_kept
               << "% of the points), " << completion.rounds << " rounds, " << bytes << " bytes of points sent, "
-              << questions << " tetrahedra asked about\n"
+              << questions << " tetrahedra asked about (" << by_nearest << " answered by the nearest point)\n"
               << "retraction:    " << retraction_rounds << " rounds, " << removals << " removals sent\n"
               << "peak memory:   ";
     for (std::size_t r = 0; r < peaks.size (); ++r)

@@ -76,14 +76,15 @@ struct AskedHash
 /** Sends every rank its \a questions and answers theirs from \a search; returns the yeses
   * this rank's questions got. */
 std::vector<Answer>
-answers (MPI_Comm comm, const std::vector<std::vector<Question>>& questions, const TileSearch& search)
+answers (MPI_Comm comm, const std::vector<std::vector<Question>>& questions, TileSearch& search)
 {
   int rank = 0;
   MPI_Comm_rank (comm, &rank);
   const std::vector<Question> received = allToAll (comm, questions);
-  std::vector<std::uint8_t> yes (received.size ());
-  tbb::parallel_for (std::size_t (0), received.size (),
-                     [&] (std::size_t i) { yes[i] = search.anyMayBeIn (received[i].reach); });
+  std::vector<const TileReach*> reaches (received.size ());
+  for (std::size_t i = 0; i < received.size (); ++i)
+    reaches[i] = &received[i].reach;
+  const std::vector<std::uint8_t> yes = search.anyMayBeIn (reaches);
   std::vector<std::vector<Answer>> out (questions.size ());
   for (std::size_t i = 0; i < received.size (); ++i)
     if (yes[i])
@@ -107,7 +108,7 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
   std::vector<Point3> own (tile.own);
   for (std::size_t i = 0; i < tile.own; ++i)
     own[i] = tile.points[i].position;
-  const TileSearch search (std::move (own));
+  TileSearch search (std::move (own));
   std::unordered_set<Asked, AskedHash> asked;
   // Each round inserts only what the last one brought.
   detail::GrowingTriangulation growing (equal_weights);
@@ -232,6 +233,7 @@ completeStars (MPI_Comm comm, TilePoints& tile, const std::vector<Box>& boxes, d
         ++added;
       }
     statistics.ghosts += added;
+    statistics.by_nearest = search.byNearest ();
     if (sumOverRanks (comm, added) == 0)
       return triangulation;
   }

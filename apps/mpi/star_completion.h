@@ -33,8 +33,9 @@ struct TilePoints
 struct StarCompletionStatistics
 {
   int rounds = 0;
-  std::size_t ghosts = 0;    ///< points received from other tiles
-  std::size_t questions = 0; ///< tetrahedra asked about, per tile asked
+  std::size_t ghosts = 0;     ///< points received from other tiles
+  std::size_t questions = 0;  ///< tetrahedra asked about, per tile asked
+  std::size_t by_nearest = 0; ///< questions answered by the nearest point (TileSearch)
   std::size_t bytes_sent = 0;
 };
 

@@ -44,6 +44,18 @@ Box::longestAxis () const
   return axis;
 }
 
+double
+Box::distance2 (const Point3& p) const
+{
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double gap = std::max ({0.0, lo[c] - p[c], p[c] - hi[c]});
+    d2 += gap * gap;
+  }
+  return d2;
+}
+
 TileReach
 TileReach::ofTetrahedron (const std::array<Point3, 4>& p, const std::array<double, 4>& w, double w_max)
 {
@@ -134,6 +146,32 @@ TileReach::mayMeet (const Box& box) const
     distance2 += Interval (gap) * gap;
   }
   return distance2.inf () <= radius2_hi_;
+}
+
+Point3
+TileReach::centre () const
+{
+  Point3 q;
+  for (int c = 0; c < 3; ++c)
+    q[c] = std::clamp (centre_lo_[c] / 2 + centre_hi_[c] / 2, centre_lo_[c], centre_hi_[c]);
+  return q;
+}
+
+bool
+TileReach::mayMeetBeyond (const Point3& q, const Point3& nearest) const
+{
+  // Every point is at least |nearest - q| from q, so at least that less |q - c| from the true
+  // centre c, which is in its bounds, as q is.
+  Interval::Protector protect;
+  Interval to_nearest2 = 0, q_off2 = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    to_nearest2 += CGAL::square (Interval (nearest[c]) - q[c]);
+    const double off = std::max ((Interval (centre_hi_[c]) - q[c]).sup (), (Interval (q[c]) - centre_lo_[c]).sup ());
+    q_off2 += Interval (off) * off;
+  }
+  const Interval least = CGAL::sqrt (to_nearest2) - CGAL::sqrt (q_off2);
+  return least.inf () <= 0 || (least * least).inf () <= radius2_hi_;
 }
 
 } // namespace pcl_wrap::mpi

@@ -18,6 +18,9 @@ struct Box
   void add (const Point3& p);
   /** \brief 0, 1 or 2: the axis of the box's longest side (the first of equal ones). */
   int longestAxis () const;
+  /** \brief The squared distance from \a p to the box, in floating point (to choose where to look
+    * first, never to decide). */
+  double distance2 (const Point3& p) const;
 };
 
 /** \brief Where a tetrahedron of a tile's triangulation reaches: the closed ball of its orthosphere,
@@ -35,6 +38,14 @@ public:
   static TileReach ofHullFacet (const std::array<Point3, 3>& p, const Point3& inner);
 
   bool mayMeet (const Box& box) const;
+
+  /** \brief A ball (not a half-space, nor everywhere). */
+  bool isBall () const { return !half_space_ && !everywhere_; }
+  /** \brief A ball's centre, as near as doubles hold it (in its bounds). */
+  Point3 centre () const;
+  /** \brief Whether a ball may hold a point no nearer to \a q, its centre(), than \a nearest is: with
+    * \a nearest the nearest point to q of a set, whether it may hold one of the set. */
+  bool mayMeetBeyond (const Point3& q, const Point3& nearest) const;
 
 private:
   bool half_space_ = false;

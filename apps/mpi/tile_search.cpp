@@ -2,7 +2,13 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "tile_search.h"
 
+#include "delaunay/cgal_kernel.h"
+#include "delaunay/regular_triangulation.h"
+
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <utility>
 
 namespace pcl_wrap::mpi
 {
@@ -39,12 +45,11 @@ TileSearch::build (std::uint32_t begin, std::uint32_t end)
   return at;
 }
 
-bool
-TileSearch::anyMayBeIn (const TileReach& reach) const
+std::uint8_t
+TileSearch::byBoxes (const TileReach& reach) const
 {
-  if (nodes_.empty ())
-    return false;
   std::vector<std::uint32_t> stack{0};
+  std::size_t leaves = 0;
   while (!stack.empty ())
   {
     const Node& node = nodes_[stack.back ()];
@@ -53,19 +58,94 @@ TileSearch::anyMayBeIn (const TileReach& reach) const
       continue;
     if (node.below == 0)
     {
+      if (++leaves > LEAF_BUDGET && reach.isBall ())
+        return UNDECIDED;
       for (std::uint32_t i = node.begin; i < node.end; ++i)
       {
         Box point;
         point.add (points_[i]);
         if (reach.mayMeet (point))
-          return true;
+          return YES;
       }
       continue;
     }
     stack.push_back (node.below);
     stack.push_back (node.above);
   }
-  return false;
+  return NO;
+}
+
+std::vector<std::uint8_t>
+TileSearch::anyMayBeIn (const std::vector<const TileReach*>& reaches)
+{
+  std::vector<std::uint8_t> answer (reaches.size (), NO);
+  if (nodes_.empty ())
+    return answer;
+  tbb::parallel_for (std::size_t (0), reaches.size (), [&] (std::size_t i) { answer[i] = byBoxes (*reaches[i]); });
+  const auto undecided = static_cast<std::size_t> (std::count (answer.begin (), answer.end (), UNDECIDED));
+  if (undecided == 0)
+    return answer;
+  by_nearest_ += undecided;
+  if (first_.empty ())
+    buildDelaunayGraph ();
+  tbb::parallel_for (std::size_t (0), reaches.size (), [&] (std::size_t i) {
+    if (answer[i] == UNDECIDED)
+    {
+      const Point3 q = reaches[i]->centre ();
+      answer[i] = reaches[i]->mayMeetBeyond (q, points_[nearest (q)]) ? YES : NO;
+    }
+  });
+  return answer;
+}
+
+std::uint32_t
+TileSearch::nearest (const Point3& q) const
+{
+  std::uint32_t at = 0;
+  while (nodes_[at].below != 0)
+  {
+    const Node &below = nodes_[nodes_[at].below], &above = nodes_[nodes_[at].above];
+    at = below.box.distance2 (q) <= above.box.distance2 (q) ? nodes_[at].below : nodes_[at].above;
+  }
+  const detail::BarePoint target (q[0], q[1], q[2]);
+  const auto bare = [&] (std::uint32_t i) { return detail::BarePoint (points_[i][0], points_[i][1], points_[i][2]); };
+  std::uint32_t best = nodes_[at].begin;
+  for (bool moved = true; moved;)
+  {
+    moved = false;
+    for (std::uint32_t k = first_[best]; k < first_[best + 1] && !moved; ++k)
+      if (CGAL::compare_distance_to_point (target, bare (neighbours_[k]), bare (best)) == CGAL::SMALLER)
+      {
+        best = neighbours_[k];
+        moved = true;
+      }
+  }
+  return best;
+}
+
+void
+TileSearch::buildDelaunayGraph ()
+{
+  detail::GrowingTriangulation delaunay (true);
+  delaunay.insert (points_, std::vector<double> (points_.size (), 0.0), 0);
+  const detail::Triangulation t = delaunay.read (points_);
+  const int k = t.dimension + 1;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::size_t s = 0; k >= 2 && s + k <= t.top_simplices.size (); s += k)
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b)
+        if (a != b)
+          edges.emplace_back (t.point_of_vertex[t.top_simplices[s + a]], t.point_of_vertex[t.top_simplices[s + b]]);
+  std::sort (edges.begin (), edges.end ());
+  edges.erase (std::unique (edges.begin (), edges.end ()), edges.end ());
+  first_.assign (points_.size () + 1, 0);
+  for (const auto& e : edges)
+    ++first_[e.first + 1];
+  for (std::size_t i = 0; i < points_.size (); ++i)
+    first_[i + 1] += first_[i];
+  neighbours_.resize (edges.size ());
+  for (std::size_t i = 0; i < edges.size (); ++i)
+    neighbours_[i] = edges[i].second;
 }
 
 } // namespace pcl_wrap::mpi
