@@ -317,7 +317,15 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidL
   {
     if (on_solid[v])
       continue;
+    // A point whose star touches the solid is the mending's: it moves one tetrahedron there.
     tetrahedra.gatherStar (v, star);
+    if (std::any_of (star.tetrahedra ().begin (), star.tetrahedra ().end (), [&] (std::uint32_t t) {
+          for (int i = 0; i < 4; ++i)
+            if (tetrahedra.neighbour (t, i) != OUTSIDE_HULL && labels.inside[tetrahedra.neighbour (t, i)])
+              return true;
+          return false;
+        }))
+      continue;
     for (std::uint32_t t : star.tetrahedra ())
       if (passable (t))
         paths.seed (t, labels.margin[t]);

@@ -49,13 +49,13 @@ std::vector<std::uint32_t>
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                    SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
-/** \brief Brings onto the solid the points the labelling left floating in the outside (none of
-  * their tetrahedra inside, as where it cut through a thin, noisy part): from each, in the order of
-  * the vertex ids, the cheapest path (by summed margins) of outside tetrahedra of X, as in
-  * joinPartsThroughX(), from its star to the solid moves inside. X holds every point, as a
-  * vertex of its tetrahedra and triangles where it samples the object; a stray point that X holds
-  * by edges alone (an outlier), or whose path is longer than a few hundred tetrahedra, stays where
-  * it is.
+/** \brief Brings onto the solid the points the labelling left floating in the outside, out of the
+  * mending's reach (none of their tetrahedra inside or next to an inside one), as where it cut
+  * through a thin, noisy part: from each, in the order of the vertex ids, the cheapest path (by
+  * summed margins) of outside tetrahedra of X, as in joinPartsThroughX(), from its star to the
+  * solid moves inside. X holds every point, as a vertex of its tetrahedra and triangles where it
+  * samples the object; a stray point that X holds by edges alone (an outlier), or whose path is
+  * longer than a few hundred tetrahedra, stays where it is.
   * \param[in,out] moved per tetrahedron, set for those it moves
   * \return the tetrahedra it moved inside, in the order it moved them */
 std::vector<std::uint32_t>
