@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace pcl_wrap::mpi
@@ -46,7 +47,7 @@ TileSearch::build (std::uint32_t begin, std::uint32_t end)
 }
 
 std::uint8_t
-TileSearch::byBoxes (const TileReach& reach) const
+TileSearch::byBoxes (const TileReach& reach, std::size_t leaf_budget) const
 {
   std::vector<std::uint32_t> stack{0};
   std::size_t leaves = 0;
@@ -58,7 +59,7 @@ TileSearch::byBoxes (const TileReach& reach) const
       continue;
     if (node.below == 0)
     {
-      if (++leaves > LEAF_BUDGET && reach.isBall ())
+      if (++leaves > leaf_budget && reach.isBall ())
         return UNDECIDED;
       for (std::uint32_t i = node.begin; i < node.end; ++i)
       {
@@ -81,19 +82,25 @@ TileSearch::anyMayBeIn (const std::vector<const TileReach*>& reaches)
   std::vector<std::uint8_t> answer (reaches.size (), NO);
   if (nodes_.empty ())
     return answer;
-  tbb::parallel_for (std::size_t (0), reaches.size (), [&] (std::size_t i) { answer[i] = byBoxes (*reaches[i]); });
+  tbb::parallel_for (std::size_t (0), reaches.size (),
+                     [&] (std::size_t i) { answer[i] = byBoxes (*reaches[i], LEAF_BUDGET); });
   const auto undecided = static_cast<std::size_t> (std::count (answer.begin (), answer.end (), UNDECIDED));
   if (undecided == 0)
     return answer;
-  by_nearest_ += undecided;
-  if (first_.empty ())
+  // The walk needs the Delaunay graph, a triangulation of the points: it pays when many balls
+  // hug the points (one per 32 points or more), not for a few.
+  const bool walk = !first_.empty () || undecided * UNDECIDED_PER_POINT > points_.size ();
+  if (walk && first_.empty ())
     buildDelaunayGraph ();
+  if (walk)
+    by_nearest_ += undecided;
   tbb::parallel_for (std::size_t (0), reaches.size (), [&] (std::size_t i) {
-    if (answer[i] == UNDECIDED)
-    {
-      const Point3 q = reaches[i]->centre ();
-      answer[i] = reaches[i]->mayMeetBeyond (q, points_[nearest (q)]) ? YES : NO;
-    }
+    if (answer[i] != UNDECIDED)
+      return;
+    const Point3 q = reaches[i]->centre ();
+    answer[i] = !walk ? byBoxes (*reaches[i], std::numeric_limits<std::size_t>::max ())
+                : reaches[i]->mayMeetBeyond (q, points_[nearest (q)]) ? YES
+                                                                      : NO;
   });
   return answer;
 }

@@ -18,7 +18,8 @@ namespace pcl_wrap::mpi
   * A k-d tree of boxes answers most questions. A ball whose sphere runs along many of the points
   * (the orthosphere of points on a thin shell is nearly the shell: it meets every box of the tree,
   * though it holds no point) is answered instead by the point nearest its centre, found by a
-  * greedy walk on the Delaunay graph of the points, which is built on first need. */
+  * greedy walk on the Delaunay graph of the points, which is built on first need: when such balls
+  * are more than one per 32 points. */
 class TileSearch
 {
 public:
@@ -41,8 +42,8 @@ private:
   static constexpr std::uint8_t NO = 0, YES = 1, UNDECIDED = 2;
 
   std::uint32_t build (std::uint32_t begin, std::uint32_t end);
-  /** YES or NO from the tree; UNDECIDED for a ball that meets more than LEAF_BUDGET leaves. */
-  std::uint8_t byBoxes (const TileReach& reach) const;
+  /** YES or NO from the tree; UNDECIDED for a ball that meets more than \a leaf_budget leaves. */
+  std::uint8_t byBoxes (const TileReach& reach, std::size_t leaf_budget) const;
   /** The point nearest \a q: from the first point of the leaf the tree descends to towards q,
     * to a nearer neighbour in the Delaunay graph while there is one, by exact comparisons (a
     * point that is not the nearest has a nearer Delaunay neighbour). */
@@ -51,6 +52,7 @@ private:
 
   static constexpr std::uint32_t LEAF_POINTS = 16;
   static constexpr std::size_t LEAF_BUDGET = 64;
+  static constexpr std::size_t UNDECIDED_PER_POINT = 32; // see anyMayBeIn()
   std::vector<Point3> points_;
   std::vector<Node> nodes_;
   // The Delaunay graph, compressed: the neighbours of point i are neighbours_[first_[i], first_[i + 1]).
