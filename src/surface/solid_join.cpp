@@ -4,7 +4,10 @@
 
 #include "util/distance.h"
 #include "util/parallel_for_each.h"
+#include "util/portable.h"
 #include "util/union_find.h"
+
+#include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
 #include <cmath>
@@ -212,20 +215,24 @@ solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& insid
   });
   SolidParts parts;
   parts.part.assign (n, SolidParts::NO_PART);
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (inside[t] && sets.isRoot (t))
-    {
-      parts.part[t] = static_cast<std::uint32_t> (parts.size.size ());
-      parts.size.push_back (0);
-    }
+  const std::vector<std::uint32_t> roots =
+      indicesWhere (n, [&] (std::size_t t) { return inside[t] && sets.isRoot (static_cast<std::uint32_t> (t)); });
+  for (std::uint32_t k = 0; k < roots.size (); ++k)
+    parts.part[roots[k]] = k;
+  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> sizes (std::vector<std::uint32_t> (roots.size (), 0));
   parallelForEach (n, [&] (std::size_t t) {
-    const std::uint32_t r = inside[t] ? sets.findConcurrently (static_cast<std::uint32_t> (t)) : SolidParts::NO_PART;
-    if (r != SolidParts::NO_PART && r != t)
-      parts.part[t] = parts.part[r];
+    if (!inside[t])
+      return;
+    const std::uint32_t r = sets.findConcurrently (static_cast<std::uint32_t> (t));
+    const std::uint32_t p = parts.part[r]; // a root's own entry, set above
+    ++sizes.local ()[p];
+    if (r != t)
+      parts.part[t] = p;
   });
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (parts.part[t] != SolidParts::NO_PART)
-      ++parts.size[parts.part[t]];
+  parts.size.assign (roots.size (), 0);
+  for (const std::vector<std::uint32_t>& local : sizes)
+    for (std::size_t k = 0; k < local.size (); ++k)
+      parts.size[k] += local[k];
   return parts;
 }
 
@@ -245,10 +252,11 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
   std::iota (order.begin (), order.end (), 0u);
   std::stable_sort (order.begin (), order.end (),
                     [&] (std::uint32_t a, std::uint32_t b) { return parts.size[a] < parts.size[b]; });
-  order.pop_back (); // the largest part stays as it is
+  const std::uint32_t largest = order.back ();
+  order.pop_back (); // the largest part stays as it is, and needs no list of its members
   std::vector<std::vector<std::uint32_t>> members (parts.size.size ());
   for (std::uint32_t t = 0; t < n; ++t)
-    if (part[t] != NONE)
+    if (part[t] != NONE && part[t] != largest)
       members[part[t]].push_back (t);
   JoinGaps gaps (tetrahedra, positions, part);
   CheapestPaths paths (tetrahedra, labels);
@@ -305,9 +313,11 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidL
     for (int i = 0; i < 4; ++i)
       on_solid[tetrahedra.vertex (t, i)] = 1;
   };
-  for (std::uint32_t t = 0; t < tetrahedra.size (); ++t)
+  parallelForEach (tetrahedra.size (), [&] (std::size_t t) {
     if (labels.inside[t])
-      markOn (t);
+      for (int i = 0; i < 4; ++i)
+        relaxedStore (&on_solid[tetrahedra.vertex (static_cast<std::uint32_t> (t), i)], std::uint8_t (1));
+  });
   std::vector<std::uint32_t> moved;
   CheapestPaths paths (tetrahedra, labels);
   const auto passable = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
