@@ -162,10 +162,9 @@ parseOptions (int argc, char** argv)
       o.weights_column = true;
     else if (apps::isThresholdOption (arg))
     {
-      const std::string error = apps::applyThresholdOption (arg, value (), o.parameters);
+      const std::string error = apps::applyThresholdOption (arg, value (), o.parameters, o.thresholds);
       if (!error.empty ())
         usageError (error);
-      o.thresholds += arg != "--mode";
     }
     else if (arg == "--region")
     {
@@ -220,8 +219,6 @@ parseOptions (int argc, char** argv)
   }
   if (positional.size () != 2)
     usageError ("expected INPUT and OUTPUT");
-  if (o.thresholds > 1)
-    usageError ("--delta, --radius, --radius-rel and --sinks each set the threshold: give one");
   o.parameters.filtration = !o.complex_json.empty ();
   o.parameters.keep_complex = !o.complex_json.empty (); // nothing else reads it
   o.input = positional[0];

@@ -15,7 +15,7 @@ isThresholdOption (const std::string& arg)
 }
 
 std::string
-applyThresholdOption (const std::string& arg, const std::string& value, WrapParameters& parameters)
+applyThresholdOption (const std::string& arg, const std::string& value, WrapParameters& parameters, int& thresholds)
 {
   char* end = nullptr;
   if (arg == "--mode")
@@ -23,8 +23,9 @@ applyThresholdOption (const std::string& arg, const std::string& value, WrapPara
     if (value != "front" && value != "global")
       return "--mode takes front or global";
     parameters.deletion = value == "front" ? SinkDeletion::front : SinkDeletion::global;
+    return "";
   }
-  else if (arg == "--sinks")
+  if (arg == "--sinks")
   {
     const long long j = std::strtoll (value.c_str (), &end, 10);
     if (value.empty () || *end != '\0' || j < 1)
@@ -40,6 +41,8 @@ applyThresholdOption (const std::string& arg, const std::string& value, WrapPara
                            : arg == "--radius"   ? Threshold::radius (x)
                                                  : Threshold::size (x);
   }
+  if (++thresholds > 1)
+    return "--delta, --radius, --radius-rel and --sinks each set the threshold: give one";
   return "";
 }
 

@@ -15,8 +15,9 @@ bool
 isThresholdOption (const std::string& arg);
 
 /** \brief Sets the threshold or deletion mode that option \a arg with \a value gives in
-  * \a parameters; returns the usage error if \a value is not one it takes, else "". */
+  * \a parameters, counting the thresholds given so far in \a thresholds; returns the usage error
+  * if \a value is not one it takes or a second threshold is given, else "". */
 std::string
-applyThresholdOption (const std::string& arg, const std::string& value, WrapParameters& parameters);
+applyThresholdOption (const std::string& arg, const std::string& value, WrapParameters& parameters, int& thresholds);
 
 } // namespace pcl_wrap::apps

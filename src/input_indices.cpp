@@ -3,21 +3,26 @@
 #include "input_indices.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace pcl_wrap::detail
 {
 
-std::vector<PointIndex>
-InputIndices::appendCopies (const std::vector<std::uint32_t>& copy_of, std::size_t input_points)
+void
+InputIndices::takeSplit (ManifoldSplit& split, Boundary& w, std::size_t input_points, WrapResult& result)
 {
-  std::vector<PointIndex> copies;
-  copies.reserve (copy_of.size ());
-  for (std::size_t k = 0; k < copy_of.size (); ++k)
+  w.triangles = std::move (split.triangles);
+  result.copies.clear ();
+  result.copies.reserve (split.copy_of.size ());
+  for (std::size_t k = 0; k < split.copy_of.size (); ++k)
   {
-    copies.push_back (of_vertex_[copy_of[k]]);
+    result.copies.push_back (of_vertex_[split.copy_of[k]]);
     of_vertex_.push_back (static_cast<PointIndex> (input_points + k));
   }
-  return copies;
+  WrapStatistics& stats = result.statistics;
+  stats.pinch_edges_split = split.pinch_edges;
+  stats.pinch_vertices_split = split.pinch_vertices;
+  stats.sheet_triangles_doubled = split.sheet_triangles;
 }
 
 WrapSurface

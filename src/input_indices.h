@@ -4,6 +4,7 @@
 
 #include "wrap/boundary.h"
 #include "wrap/classification.h"
+#include "wrap/manifold_split.h"
 #include "wrap/subcomplex.h"
 #include "delaunay/simplicial_complex.h"
 
@@ -29,9 +30,11 @@ public:
   PointIndex operator() (std::uint32_t vertex) const { return of_vertex_[vertex]; }
   std::size_t size () const { return of_vertex_.size (); }
 
-  /** \brief Vertex size() + k becomes a copy of vertex copy_of[k], numbered input_points + k.
-    * Returns the input point each copy copies (WrapResult::copies). */
-  std::vector<PointIndex> appendCopies (const std::vector<std::uint32_t>& copy_of, std::size_t input_points);
+  /** \brief Takes the pinch split \a split of \a w: its triangles become w's, vertex size() + k
+    * becomes a copy of vertex split.copy_of[k], numbered \a input_points + k, the input point each
+    * copy copies goes to WrapResult::copies, and the split's counts to the statistics of
+    * \a result. */
+  void takeSplit (ManifoldSplit& split, Boundary& w, std::size_t input_points, WrapResult& result);
 
   /** \brief \a w in point indices. */
   WrapSurface surface (const Boundary& w) const;

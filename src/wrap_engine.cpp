@@ -256,12 +256,7 @@ WrapEngine::report ()
     split_ = splitPinches (complex, *x_, w_);
   if (split_)
   {
-    ManifoldSplit& split = *split_;
-    w_.triangles = std::move (split.triangles);
-    result_.copies = input_indices_.appendCopies (split.copy_of, points_.size ());
-    stats.pinch_edges_split = split.pinch_edges;
-    stats.pinch_vertices_split = split.pinch_vertices;
-    stats.sheet_triangles_doubled = split.sheet_triangles;
+    input_indices_.takeSplit (*split_, w_, points_.size (), result_);
     split_.reset ();
   }
 #ifdef PCL_WRAP_CHECK_INVARIANTS

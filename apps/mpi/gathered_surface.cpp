@@ -60,28 +60,18 @@ neighboursOf (const detail::FilledInParallel<std::uint32_t>& top, std::size_t nu
   return across;
 }
 
-/** Flags, in \a members, the simplex with the vertex ids \a v (ascending, \a n of them) and its
-  * faces, found among the tetrahedra around its first vertex. */
+/** Flags, in \a members, the simplex with the vertex ids \a v (\a n of them) and its faces. */
 void
 flagWithFaces (const detail::Tetrahedra& tetrahedra, const std::uint32_t* v, int n, detail::Star& star,
                std::array<std::vector<std::uint8_t>, 4>& members)
 {
-  const detail::SimplicialComplex& complex = tetrahedra.complex ();
-  tetrahedra.gatherStar (v[0], star);
-  for (std::uint32_t t : star.tetrahedra ())
-  {
-    unsigned mask = 0;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < n; ++j)
-        mask |= tetrahedra.vertex (t, i) == v[j] ? 1u << i : 0u;
-    if (__builtin_popcount (mask) != n)
-      continue;
-    for (unsigned sub = mask; sub != 0; sub = (sub - 1) & mask)
-    {
-      const detail::Simplex f = complex.face (3, t, sub);
-      members[f.dim][f.id] = 1;
-    }
+  const auto [t, mask] = tetrahedra.faceAround (v[0], v, n, star);
+  if (t == detail::NO_TETRAHEDRON)
     return;
+  for (unsigned sub = mask; sub != 0; sub = (sub - 1) & mask)
+  {
+    const detail::Simplex f = tetrahedra.complex ().face (3, t, sub);
+    members[f.dim][f.id] = 1;
   }
 }
 
@@ -162,15 +152,13 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   detail::Star star;
   for (const auto& s : sheets)
   {
-    std::array<std::uint32_t, 3> v{vertex (s[0]), vertex (s[1]), vertex (s[2])};
-    std::sort (v.begin (), v.end ());
-    flagWithFaces (adjacency, v.data (), 3, star, members);
+    const std::uint32_t v[3] = {vertex (s[0]), vertex (s[1]), vertex (s[2])};
+    flagWithFaces (adjacency, v, 3, star, members);
   }
   for (const auto& e : raw_w.dangling_edges)
   {
-    std::array<std::uint32_t, 2> v{vertex (e[0]), vertex (e[1])};
-    std::sort (v.begin (), v.end ());
-    flagWithFaces (adjacency, v.data (), 2, star, members);
+    const std::uint32_t v[2] = {vertex (e[0]), vertex (e[1])};
+    flagWithFaces (adjacency, v, 2, star, members);
   }
   for (PointIndex i : raw_w.isolated_vertices)
     members[0][vertex (i)] = 1;
@@ -201,14 +189,7 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   detail::DefaultSurface stage (complex.vertexArray (3), adjacency, positions, weights, false);
   detail::DefaultSurface::Output out = stage.surface (x, positions, false, file.viewpoint, result.statistics, clock);
   if (out.split)
-  {
-    detail::ManifoldSplit& split = *out.split;
-    out.w.triangles = std::move (split.triangles);
-    result.copies = indices.appendCopies (split.copy_of, file.points.size ());
-    stats.pinch_edges_split = split.pinch_edges;
-    stats.pinch_vertices_split = split.pinch_vertices;
-    stats.sheet_triangles_doubled = split.sheet_triangles;
-  }
+    indices.takeSplit (*out.split, out.w, file.points.size (), result);
   result.surface = indices.surface (out.w);
   clock.stageDone ("output");
 }

@@ -104,11 +104,9 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
       std::string v;
       if (!value (v))
         return usageError (arg + " needs a value");
-      const std::string error = apps::applyThresholdOption (arg, v, o.parameters);
+      const std::string error = apps::applyThresholdOption (arg, v, o.parameters, thresholds);
       if (!error.empty ())
         return usageError (error);
-      if (arg != "--mode" && ++thresholds > 1)
-        return usageError ("--delta, --radius, --radius-rel and --sinks each set the threshold: give one");
     }
     else if (arg == "--stats")
       o.stats = true;

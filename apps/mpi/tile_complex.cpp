@@ -92,18 +92,8 @@ TileComplex::find (int dim, const std::uint32_t* indices) const
     return {0, home};
   // Every simplex on an own vertex is a face of a tetrahedron in that vertex's (complete) star.
   thread_local detail::Star star;
-  tetrahedra_.gatherStar (home, star);
-  for (std::uint32_t t : star.tetrahedra ())
-  {
-    unsigned mask = 0;
-    for (int i = 0; i <= dim; ++i)
-      for (int j = 0; j < 4; ++j)
-        if (tetrahedra_.vertex (t, j) == vertices[i])
-          mask |= 1u << j;
-    if (detail::maskSize (mask) == dim + 1)
-      return complex_.face (3, t, mask);
-  }
-  return {dim, NO_SIMPLEX};
+  const auto [t, mask] = tetrahedra_.faceAround (home, vertices, dim + 1, star);
+  return t == detail::NO_TETRAHEDRON ? Simplex{dim, NO_SIMPLEX} : complex_.face (3, t, mask);
 }
 
 } // namespace pcl_wrap::mpi

@@ -98,6 +98,23 @@ Tetrahedra::gatherStar (std::uint32_t v, Star& star) const
   }
 }
 
+std::pair<std::uint32_t, unsigned>
+Tetrahedra::faceAround (std::uint32_t around, const std::uint32_t* v, int n, Star& star) const
+{
+  gatherStar (around, star);
+  for (std::uint32_t t : star.tetrahedra ())
+  {
+    unsigned mask = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (vertex (t, j) == v[i])
+          mask |= 1u << j;
+    if (maskSize (mask) == n)
+      return {t, mask};
+  }
+  return {NO_TETRAHEDRON, 0};
+}
+
 std::vector<std::uint32_t>
 Tetrahedra::verticesOf (const std::vector<std::uint32_t>& ids) const
 {

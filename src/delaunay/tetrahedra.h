@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcl_wrap::detail
@@ -112,6 +113,10 @@ public:
     * across the facets that contain v, each in the order of its facets: an order that depends on
     * the triangulation alone. */
   void gatherStar (std::uint32_t v, Star& star) const;
+  /** \brief The face of Del S with the \a n vertices \a v, found in the star of \a around (one of
+    * them), gathered into \a star: a tetrahedron that has them all, and the mask of their local
+    * indices in it; {NO_TETRAHEDRON, 0} if none has. */
+  std::pair<std::uint32_t, unsigned> faceAround (std::uint32_t around, const std::uint32_t* v, int n, Star& star) const;
   ///@}
 
 private:

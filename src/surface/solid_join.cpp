@@ -309,14 +309,13 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidL
   constexpr std::uint32_t NONE = CheapestPaths::NONE;
   const std::uint32_t num_vertices = tetrahedra.complex ().numVertices ();
   std::vector<std::uint8_t> on_solid (num_vertices, 0);
-  const auto markOn = [&] (std::uint32_t t) {
+  const auto markOn = [&] (std::uint32_t t) { // also from several threads at once
     for (int i = 0; i < 4; ++i)
-      on_solid[tetrahedra.vertex (t, i)] = 1;
+      relaxedStore (&on_solid[tetrahedra.vertex (t, i)], std::uint8_t (1));
   };
   parallelForEach (tetrahedra.size (), [&] (std::size_t t) {
     if (labels.inside[t])
-      for (int i = 0; i < 4; ++i)
-        relaxedStore (&on_solid[tetrahedra.vertex (static_cast<std::uint32_t> (t), i)], std::uint8_t (1));
+      markOn (static_cast<std::uint32_t> (t));
   });
   std::vector<std::uint32_t> moved;
   CheapestPaths paths (tetrahedra, labels);
@@ -331,8 +330,11 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidL
     tetrahedra.gatherStar (v, star);
     if (std::any_of (star.tetrahedra ().begin (), star.tetrahedra ().end (), [&] (std::uint32_t t) {
           for (int i = 0; i < 4; ++i)
-            if (tetrahedra.neighbour (t, i) != OUTSIDE_HULL && labels.inside[tetrahedra.neighbour (t, i)])
+          {
+            const std::uint32_t u = tetrahedra.neighbour (t, i);
+            if (u != OUTSIDE_HULL && labels.inside[u])
               return true;
+          }
           return false;
         }))
       continue;
