@@ -7,12 +7,11 @@
 #include "util/portable.h"
 #include "util/union_find.h"
 
-#include <tbb/enumerable_thread_specific.h>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <queue>
 #include <utility>
@@ -99,29 +98,34 @@ class CheapestPaths
 public:
   static constexpr std::uint32_t NONE = SolidParts::NO_PART;
 
+  // cost_ and from_ are written only where a search reaches (is_reached_): searches are local, and
+  // the pages of the rest of these arrays, as large as the mesh, are never touched.
   CheapestPaths (const Tetrahedra& tetrahedra, const SolidLabels& labels)
-    : tetrahedra_ (tetrahedra), labels_ (labels), cost_ (tetrahedra.size (), INFINITE), from_ (tetrahedra.size (), NONE)
+    : tetrahedra_ (tetrahedra),
+      labels_ (labels),
+      cost_ (new double[tetrahedra.size ()]),
+      from_ (new std::uint32_t[tetrahedra.size ()]),
+      is_reached_ (tetrahedra.size (), false)
   {}
 
   void seed (std::uint32_t t, double cost)
   {
-    cost_[t] = cost;
-    reached_.push_back (t);
+    reach (t, cost, NONE);
     queue_.push ({cost, t});
   }
 
   /** Searches from the seeds through the outside tetrahedra that \a passable admits, cheapest
     * first, and stops at the first facet from a tetrahedron a it reached to an inside one b that
-    * \a accept (a, b) takes, or after expanding \a reach tetrahedra. Returns a (NONE if none):
+    * \a accept (a, b) takes, or after expanding \a limit tetrahedra. Returns a (NONE if none):
     * trace() gives the path to it. */
   template <class Passable, class Accept>
-  std::uint32_t run (const Passable& passable, const Accept& accept, std::size_t reach)
+  std::uint32_t run (const Passable& passable, const Accept& accept, std::size_t limit)
   {
-    for (std::size_t expanded = 0; !queue_.empty () && expanded < reach;)
+    for (std::size_t expanded = 0; !queue_.empty () && expanded < limit;)
     {
       const auto [c, a] = queue_.top ();
       queue_.pop ();
-      if (c > cost_[a])
+      if (c > cost_[a]) // a was reached, by a cheaper path since
         continue;
       ++expanded;
       for (int i = 0; i < 4; ++i)
@@ -136,12 +140,9 @@ public:
           continue;
         }
         const double through = c + labels_.margin[b];
-        if (through >= cost_[b] || !passable (b))
+        if (through >= cost (b) || !passable (b))
           continue;
-        if (cost_[b] == INFINITE)
-          reached_.push_back (b);
-        cost_[b] = through;
-        from_[b] = a;
+        reach (b, through, a);
         queue_.push ({through, b});
       }
     }
@@ -161,22 +162,33 @@ public:
   void clear ()
   {
     for (std::uint32_t t : reached_)
-    {
-      cost_[t] = INFINITE;
-      from_[t] = NONE;
-    }
+      is_reached_[t] = false;
     reached_.clear ();
     queue_ = {};
   }
 
 private:
-  static constexpr double INFINITE = std::numeric_limits<double>::infinity ();
   using Entry = std::pair<double, std::uint32_t>;
+
+  double cost (std::uint32_t t) const { return is_reached_[t] ? cost_[t] : std::numeric_limits<double>::infinity (); }
+
+  void reach (std::uint32_t t, double cost, std::uint32_t from)
+  {
+    if (!is_reached_[t])
+    {
+      is_reached_[t] = true;
+      reached_.push_back (t);
+    }
+    cost_[t] = cost;
+    from_[t] = from;
+  }
 
   const Tetrahedra& tetrahedra_;
   const SolidLabels& labels_;
-  std::vector<double> cost_;
-  std::vector<std::uint32_t> from_, reached_;
+  std::unique_ptr<double[]> cost_;
+  std::unique_ptr<std::uint32_t[]> from_;
+  std::vector<bool> is_reached_;
+  std::vector<std::uint32_t> reached_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
 };
 
@@ -196,57 +208,17 @@ moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::ve
 
 } // namespace
 
-SolidParts
-solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
-{
-  const std::size_t n = tetrahedra.size ();
-  UnionFind sets;
-  sets.resetInParallel (n);
-  parallelForEach (n, [&] (std::size_t id) {
-    const auto t = static_cast<std::uint32_t> (id);
-    if (!inside[t])
-      return;
-    for (int i = 0; i < 4; ++i)
-    {
-      const std::uint32_t u = tetrahedra.neighbour (t, i);
-      if (u != OUTSIDE_HULL && u > t && inside[u])
-        sets.uniteConcurrently (t, u);
-    }
-  });
-  SolidParts parts;
-  parts.part.assign (n, SolidParts::NO_PART);
-  const std::vector<std::uint32_t> roots =
-      indicesWhere (n, [&] (std::size_t t) { return inside[t] && sets.isRoot (static_cast<std::uint32_t> (t)); });
-  for (std::uint32_t k = 0; k < roots.size (); ++k)
-    parts.part[roots[k]] = k;
-  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> sizes (std::vector<std::uint32_t> (roots.size (), 0));
-  parallelForEach (n, [&] (std::size_t t) {
-    if (!inside[t])
-      return;
-    const std::uint32_t r = sets.findConcurrently (static_cast<std::uint32_t> (t));
-    const std::uint32_t p = parts.part[r]; // a root's own entry, set above
-    ++sizes.local ()[p];
-    if (r != t)
-      parts.part[t] = p;
-  });
-  parts.size.assign (roots.size (), 0);
-  for (const std::vector<std::uint32_t>& local : sizes)
-    for (std::size_t k = 0; k < local.size (); ++k)
-      parts.size[k] += local[k];
-  return parts;
-}
-
-std::vector<std::uint32_t>
+SolidJoin
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
-                   SolidLabels& labels, std::vector<std::uint8_t>& moved_flags)
+                   const SolidParts& parts, SolidLabels& labels, std::vector<std::uint8_t>& moved_flags)
 {
   constexpr std::uint32_t NONE = SolidParts::NO_PART;
   const std::size_t n = tetrahedra.size ();
-  const SolidParts parts = solidParts (tetrahedra, labels.inside);
   const std::vector<std::uint32_t>& part = parts.part;
-  std::vector<std::uint32_t> moved;
-  if (parts.size.size () < 2)
-    return moved;
+  SolidJoin join;
+  join.parts = parts.size.size ();
+  if (join.parts < 2)
+    return join;
   UnionFind joined (parts.size.size ());
   std::vector<std::uint32_t> order (parts.size.size ());
   std::iota (order.begin (), order.end (), 0u);
@@ -255,9 +227,8 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
   const std::uint32_t largest = order.back ();
   order.pop_back (); // the largest part stays as it is, and needs no list of its members
   std::vector<std::vector<std::uint32_t>> members (parts.size.size ());
-  for (std::uint32_t t = 0; t < n; ++t)
-    if (part[t] != NONE && part[t] != largest)
-      members[part[t]].push_back (t);
+  for (std::uint32_t t : indicesWhere (n, [&] (std::size_t t) { return part[t] != NONE && part[t] != largest; }))
+    members[part[t]].push_back (t);
   JoinGaps gaps (tetrahedra, positions, part);
   CheapestPaths paths (tetrahedra, labels);
   std::vector<std::uint8_t> on_part (tetrahedra.complex ().numVertices (), 0);
@@ -293,13 +264,14 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     if (end != NONE)
     {
       joined.attach (mine, goal);
-      moveInside (paths.trace (end), labels, moved_flags, moved);
+      --join.parts;
+      moveInside (paths.trace (end), labels, moved_flags, join.moved);
     }
     paths.clear ();
     for (std::uint32_t v : corners)
       on_part[v] = 0;
   }
-  return moved;
+  return join;
 }
 
 std::vector<std::uint32_t>

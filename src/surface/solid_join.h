@@ -4,6 +4,7 @@
 
 #include "delaunay/tetrahedra.h"
 #include "surface/solid_labelling.h"
+#include "surface/solid_parts.h"
 #include "wrap/subcomplex.h"
 
 #include <cstddef>
@@ -19,20 +20,12 @@ namespace pcl_wrap::detail
   * separate object of bench/corpus.py has 300, its smallest inner shell 1,200. */
 constexpr std::size_t FRAGMENT_VERTICES = 32;
 
-/** \brief The connected parts of a solid, through the facets its tetrahedra share. */
-struct SolidParts
+/** \brief What joinPartsThroughX() did. */
+struct SolidJoin
 {
-  static constexpr std::uint32_t NO_PART = ~std::uint32_t (0);
-  /** \brief Per tetrahedron, its part (NO_PART outside), numbered in the order of their lowest
-    * tetrahedra. */
-  std::vector<std::uint32_t> part;
-  std::vector<std::uint32_t> size; ///< per part, its tetrahedra
+  std::vector<std::uint32_t> moved; ///< the tetrahedra moved inside, in the order they moved
+  std::size_t parts = 0;            ///< the parts of the solid after the joins, at most
 };
-
-/** \brief The parts of the solid \a inside, on all threads; they do not depend on the number of
-  * threads. */
-SolidParts
-solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
 
 /** \brief Joins the parts of the solid that the labelling cut apart: from each part but the
   * largest, smallest first, the cheapest path (by summed margins) of outside tetrahedra of X to
@@ -43,11 +36,11 @@ solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& insid
   * does not resolve (its ends within 1.5 spacings), except from a fragment of fewer than 32
   * vertices, too small to be an object of its own, which joins the first part it reaches.
   * \param[in] positions per vertex
-  * \param[in,out] moved per tetrahedron, set for those it moves
-  * \return the tetrahedra it moved inside, in the order it moved them */
-std::vector<std::uint32_t>
+  * \param[in] parts the parts of the solid \a labels
+  * \param[in,out] moved per tetrahedron, set for those it moves */
+SolidJoin
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
-                   SolidLabels& labels, std::vector<std::uint8_t>& moved);
+                   const SolidParts& parts, SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
 /** \brief Brings onto the solid the points the labelling left floating in the outside, out of the
   * mending's reach (none of their tetrahedra inside or next to an inside one), as where it cut

@@ -5,6 +5,7 @@
 #include "surface/link_cycle.h"
 #include "surface/solid_euler.h"
 #include "surface/solid_join.h"
+#include "surface/solid_parts.h"
 #include "surface/solid_voids.h"
 #include "surface/surface_handles.h"
 #include "util/parallel_for_each.h"
@@ -74,13 +75,20 @@ public:
   SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
   {
     SolidRepair done;
-    done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_).size ();
-    if (stays_buried_.empty ()) // not a volume, whose solid is X's
+    bool one_part = false; // known to be one part, before the mending
     {
-      // The parts the labelling cut apart, joined while their fragments are small, then the points
-      // it left floating between them, brought on; the mending may cut parts apart again.
-      done.flipped += joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_).size ();
-      done.flipped += bringFloatingPointsOn (tetrahedra_, x, labels_, flipped_).size ();
+      SideParts sides (tetrahedra_, labels_.inside);
+      done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_, sides).size ();
+      if (stays_buried_.empty ()) // not a volume, whose solid is X's
+      {
+        // The parts the labelling cut apart, joined while their fragments are small, then the
+        // points it left floating between them, brought on (each by a path to the solid).
+        const SolidJoin join =
+            joinPartsThroughX (tetrahedra_, x, positions, sides.solid (labels_.inside), labels_, flipped_);
+        done.flipped += join.moved.size ();
+        done.flipped += bringFloatingPointsOn (tetrahedra_, x, labels_, flipped_).size ();
+        one_part = join.parts == 1;
+      }
     }
     // Most vertices need nothing: find the others on all threads, then mend them in order.
     const std::vector<std::uint8_t> needs = surfaceVerticesToMend ();
@@ -88,8 +96,18 @@ public:
     for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
       if (needs[v] && !staysBuried (v)) // a volume's inside: nothing to do
         work.push_back (v);
+    std::vector<std::uint8_t> before_mending;
+    if (one_part)
+      before_mending = labels_.inside;
     mend (std::move (work), done);
-    std::vector<std::uint32_t> joined = joinPartsThroughX (tetrahedra_, x, positions, labels_, flipped_);
+    // The mending may cut the solid apart; most often it plainly has not.
+    std::vector<std::uint32_t> joined;
+    if (!one_part || !staysOnePart (tetrahedra_, before_mending, labels_.inside, changedSince (before_mending)))
+    {
+      const SolidParts parts = solidParts (tetrahedra_, labels_.inside);
+      joined = joinPartsThroughX (tetrahedra_, x, positions, parts, labels_, flipped_).moved;
+    }
+    before_mending = {};
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
     const std::vector<std::uint32_t> filled = fillUnsampledVoidsNear (tetrahedra_, labels_, flipped_, movedSoFar ());
     joined.insert (joined.end (), filled.begin (), filled.end ());
@@ -118,6 +136,12 @@ public:
 
 private:
   using LinkEdge = std::array<std::uint32_t, 2>;
+
+  /** The tetrahedra whose side is not the one in \a before, ascending. */
+  std::vector<std::uint32_t> changedSince (const std::vector<std::uint8_t>& before) const
+  {
+    return indicesWhere (before.size (), [&] (std::size_t t) { return before[t] != labels_.inside[t]; });
+  }
 
   /** The tetrahedra moved so far, ascending. */
   std::vector<std::uint32_t> movedSoFar () const

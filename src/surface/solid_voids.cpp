@@ -4,7 +4,6 @@
 
 #include "surface/solid_join.h"
 #include "util/parallel_for_each.h"
-#include "util/union_find.h"
 
 #include <algorithm>
 #include <atomic>
@@ -18,36 +17,31 @@ namespace pcl_wrap::detail
 std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved)
 {
+  SideParts sides (tetrahedra, labels.inside);
+  return fillUnsampledVoids (tetrahedra, labels, moved, sides);
+}
+
+std::vector<std::uint32_t>
+fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
+                    SideParts& sides)
+{
   const std::size_t n = tetrahedra.size ();
   const std::vector<std::uint8_t>& inside = labels.inside;
-  // The outside's connected parts, each named by its lowest tetrahedron.
-  UnionFind parts;
-  parts.resetInParallel (n);
-  parallelForEach (n, [&] (std::size_t id) {
-    const auto t = static_cast<std::uint32_t> (id);
-    for (int i = 0; !inside[t] && i < 4; ++i)
-    {
-      const std::uint32_t u = tetrahedra.neighbour (t, i);
-      if (u != OUTSIDE_HULL && u > t && !inside[u])
-        parts.uniteConcurrently (t, u);
-    }
-  });
   // A part reaching the hull is the outside; the others are voids, most of them a few tetrahedra.
   std::unique_ptr<std::atomic<std::uint8_t>[]> open (new std::atomic<std::uint8_t>[n]());
   parallelForEach (n, [&] (std::size_t t) {
     for (int i = 0; !inside[t] && i < 4; ++i)
       if (tetrahedra.neighbour (static_cast<std::uint32_t> (t), i) == OUTSIDE_HULL)
-        open[parts.findConcurrently (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
+        open[sides.part (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
   });
   const auto inVoid = [&] (std::size_t t) {
-    return !inside[t] &&
-           !open[parts.findConcurrently (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
+    return !inside[t] && !open[sides.part (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
   };
   const std::vector<std::uint32_t> in_voids = indicesWhere (n, inVoid); // ascending
   std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;         // (void, vertex)
   for (std::uint32_t t : in_voids)
     for (int i = 0; i < 4; ++i)
-      corners.emplace_back (parts.find (t), tetrahedra.vertex (t, i));
+      corners.emplace_back (sides.part (t), tetrahedra.vertex (t, i));
   std::sort (corners.begin (), corners.end ());
   corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
   std::unordered_map<std::uint32_t, std::uint32_t> vertices; // per void
@@ -55,12 +49,13 @@ fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vect
     ++vertices[c.first];
   std::vector<std::uint32_t> filled;
   for (std::uint32_t t : in_voids)
-    if (vertices[parts.find (t)] < FRAGMENT_VERTICES)
+    if (vertices[sides.part (t)] < FRAGMENT_VERTICES)
     {
       labels.inside[t] = 1;
       moved[t] = 1;
       filled.push_back (t);
     }
+  sides.movedInside (filled);
   return filled;
 }
 
