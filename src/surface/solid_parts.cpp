@@ -20,12 +20,15 @@ constexpr std::size_t LOCAL_REACH = 4096;
 
 } // namespace
 
-SideParts::SideParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside) : tetrahedra_ (tetrahedra)
+SideParts::SideParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside, Sides sides)
+  : tetrahedra_ (tetrahedra)
 {
   const std::size_t n = tetrahedra.size ();
   sets_.resetInParallel (n);
   parallelForEach (n, [&] (std::size_t id) {
     const auto t = static_cast<std::uint32_t> (id);
+    if ((sides == Sides::outside && inside[t]) || (sides == Sides::solid && !inside[t]))
+      return;
     for (int i = 0; i < 4; ++i)
     {
       const std::uint32_t u = tetrahedra.neighbour (t, i);
@@ -75,7 +78,7 @@ SideParts::solid (const std::vector<std::uint8_t>& inside)
 SolidParts
 solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
 {
-  return SideParts (tetrahedra, inside).solid (inside);
+  return SideParts (tetrahedra, inside, SideParts::Sides::solid).solid (inside);
 }
 
 bool

@@ -27,8 +27,17 @@ struct SolidParts
 class SideParts
 {
 public:
-  /** \brief The parts of the tetrahedra flagged in \a inside and of the others, on all threads. */
-  SideParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
+  /** \brief Which sides' parts to find. */
+  enum class Sides
+  {
+    outside,
+    solid,
+    both
+  };
+
+  /** \brief The parts of the tetrahedra flagged in \a inside (the solid) and of the others (the
+    * outside), or of one of the two, on all threads; the other side's tetrahedra stay apart. */
+  SideParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside, Sides sides = Sides::both);
 
   /** \brief The lowest tetrahedron of \a t's part; safe on several threads at once. */
   std::uint32_t part (std::uint32_t t) { return sets_.findConcurrently (t); }
@@ -37,7 +46,8 @@ public:
     * the parts of the solid around them. */
   void movedInside (const std::vector<std::uint32_t>& moved);
 
-  /** \brief The parts of the solid \a inside (the labels these parts are of), numbered. */
+  /** \brief The parts of the solid \a inside (the labels these parts are of, with the solid's
+    * parts found), numbered. */
   SolidParts solid (const std::vector<std::uint8_t>& inside);
 
 private:

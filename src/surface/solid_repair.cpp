@@ -77,7 +77,9 @@ public:
     SolidRepair done;
     bool one_part = false; // known to be one part, before the mending
     {
-      SideParts sides (tetrahedra_, labels_.inside);
+      // A volume's solid is X's: its parts are not joined.
+      SideParts sides (tetrahedra_, labels_.inside,
+                       stays_buried_.empty () ? SideParts::Sides::both : SideParts::Sides::outside);
       done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_, sides).size ();
       if (stays_buried_.empty ()) // not a volume, whose solid is X's
       {

@@ -17,7 +17,7 @@ namespace pcl_wrap::detail
 std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved)
 {
-  SideParts sides (tetrahedra, labels.inside);
+  SideParts sides (tetrahedra, labels.inside, SideParts::Sides::outside);
   return fillUnsampledVoids (tetrahedra, labels, moved, sides);
 }
 

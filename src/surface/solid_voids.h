@@ -17,7 +17,8 @@ namespace pcl_wrap::detail
   * FRAGMENT_VERTICES vertices (a bubble of a few tetrahedra between noisy points) moves inside. A
   * void the points sample, the inside of a hollow ball, stays. On all threads but the filling.
   * \param[in,out] moved per tetrahedron, set for those it moves
-  * \param[in,out] sides the parts of both sides of \a labels; the voids filled join the solid's
+  * \param[in,out] sides the parts of the outside of \a labels, or of both sides; the voids filled
+  *                join the solid's
   * \return the tetrahedra it moved inside, ascending */
 std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
