@@ -7,7 +7,6 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
-#include <unordered_set>
 
 namespace pcl_wrap::detail
 {
@@ -90,9 +89,9 @@ staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& bef
     return at != changed.end () && *at == t ? std::size_t (at - changed.begin ()) : changed.size ();
   };
   std::vector<std::uint8_t> clustered (changed.size (), 0);
-  std::vector<std::uint32_t> cluster, touching;
-  std::unordered_set<std::uint32_t> reached;
-  std::vector<std::uint32_t> queue;
+  std::vector<std::uint32_t> cluster, touching, queue;
+  std::vector<std::uint32_t> reached (tetrahedra.size (), 0); // per tetrahedron, the last cluster to reach it
+  std::uint32_t stamp = 0;
   for (std::size_t k = 0; k < changed.size (); ++k)
   {
     if (clustered[k])
@@ -133,18 +132,18 @@ staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& bef
     // Are they connected through the solid after, nearby?
     std::sort (touching.begin (), touching.end ());
     touching.erase (std::unique (touching.begin (), touching.end ()), touching.end ());
-    reached.clear ();
-    reached.insert (touching[0]);
+    reached[touching[0]] = ++stamp;
     queue.assign (1, touching[0]); // breadth first: the way round is near
     std::size_t found = 1;
-    for (std::size_t q = 0; found < touching.size () && q < queue.size () && reached.size () < LOCAL_REACH; ++q)
+    for (std::size_t q = 0; found < touching.size () && q < queue.size () && queue.size () < LOCAL_REACH; ++q)
     {
       const std::uint32_t t = queue[q];
       for (int i = 0; i < 4; ++i)
       {
         const std::uint32_t u = tetrahedra.neighbour (t, i);
-        if (u == OUTSIDE_HULL || !after[u] || !reached.insert (u).second)
+        if (u == OUTSIDE_HULL || !after[u] || reached[u] == stamp)
           continue;
+        reached[u] = stamp;
         queue.push_back (u);
         found += std::binary_search (touching.begin (), touching.end (), u);
       }
