@@ -7,6 +7,7 @@
 #include "surface/solid_parts.h"
 #include "surface/solid_voids.h"
 #include "support/pipeline.h"
+#include "support/random_labels.h"
 #include "support/samplers.h"
 #include "util/distance.h"
 
@@ -28,12 +29,7 @@ TEST (SolidParts, PartsKeptUpAsVoidsFillAreThePartsFoundAfresh)
   std::mt19937 random (7);
   for (int trial = 0; trial < 10; ++trial)
   {
-    detail::SolidLabels labels;
-    for (std::size_t t = 0; t < n; ++t)
-    {
-      labels.inside.push_back (random () % 100 < 60);
-      labels.margin.push_back (1.0f);
-    }
+    detail::SolidLabels labels = randomLabels (n, 60, random);
     std::vector<std::uint8_t> moved (n, 0);
     detail::SideParts sides (p.tetrahedra, labels.inside);
     const std::vector<std::uint32_t> filled = detail::fillUnsampledVoids (p.tetrahedra, labels, moved, sides);

@@ -6,6 +6,7 @@
 #include "surface/solid_join.h"
 #include "surface/solid_voids.h"
 #include "support/pipeline.h"
+#include "support/random_labels.h"
 #include "support/samplers.h"
 #include "util/distance.h"
 
@@ -97,12 +98,7 @@ TEST (SolidVoids, AfterAFewMovesTheSearchNearThemFillsWhatTheWholeSearchFills)
   std::mt19937 random (3);
   for (int trial = 0; trial < 20; ++trial)
   {
-    detail::SolidLabels labels;
-    for (std::size_t t = 0; t < n; ++t)
-    {
-      labels.inside.push_back (random () % 100 < 70);
-      labels.margin.push_back (1.0f);
-    }
+    detail::SolidLabels labels = randomLabels (n, 70, random);
     std::vector<std::uint8_t> moved (n, 0);
     detail::fillUnsampledVoids (p.tetrahedra, labels, moved);
     std::vector<std::uint32_t> changed;
