@@ -92,7 +92,7 @@ TEST (SolidParts, StaysOnePartOnlyWhenItIs)
       if (after[t] != ball[t])
         changed.push_back (t);
     const bool one = detail::solidParts (p.tetrahedra, after).size.size () == 1;
-    const bool says_one = detail::staysOnePart (p.tetrahedra, ball, after, changed);
+    const bool says_one = detail::staysOnePart (p.tetrahedra, after, changed);
     if (says_one)
       EXPECT_TRUE (one) << "trial " << trial;
     yes += says_one;

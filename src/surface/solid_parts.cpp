@@ -81,8 +81,8 @@ solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& insid
 }
 
 bool
-staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& before,
-              const std::vector<std::uint8_t>& after, const std::vector<std::uint32_t>& changed)
+staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& after,
+              const std::vector<std::uint32_t>& changed)
 {
   const auto indexOf = [&] (std::uint32_t t) { // in changed, or changed.size ()
     const auto at = std::lower_bound (changed.begin (), changed.end (), t);
@@ -114,10 +114,10 @@ staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& bef
         const std::size_t j = indexOf (u);
         if (j == changed.size ())
         {
-          if (after[u])
+          if (after[u]) // and so before: it did not change
           {
             touching.push_back (u);
-            kept_next_to_it = kept_next_to_it || before[u];
+            kept_next_to_it = true;
           }
         }
         else if (!clustered[j])

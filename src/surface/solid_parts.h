@@ -60,14 +60,14 @@ private:
 SolidParts
 solidParts (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside);
 
-/** \brief Is the solid \a after one part, given that \a before, from which it differs in the
-  * tetrahedra \a changed (ascending), is one part? Judged near the change alone: yes when each
-  * connected cluster of changed tetrahedra has a tetrahedron inside both before and after next to
-  * it, and the tetrahedra inside after in or next to the cluster are connected through at most
-  * LOCAL_REACH inside tetrahedra; then every path of \a before through the cluster has a way round
-  * it. No when that does not hold, though the solid may still be one part. */
+/** \brief Is the solid \a after one part, given that it was one part before the tetrahedra
+  * \a changed (ascending) changed side? Judged near the change alone: yes when each connected
+  * cluster of changed tetrahedra has an unchanged inside tetrahedron next to it, and the inside
+  * tetrahedra in or next to the cluster are connected through at most LOCAL_REACH inside
+  * tetrahedra; then every path of the solid before through the cluster has a way round it. No
+  * when that does not hold, though the solid may still be one part. */
 bool
-staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& before,
-              const std::vector<std::uint8_t>& after, const std::vector<std::uint32_t>& changed);
+staysOnePart (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& after,
+              const std::vector<std::uint32_t>& changed);
 
 } // namespace pcl_wrap::detail

@@ -104,7 +104,7 @@ public:
     mend (std::move (work), done);
     // The mending may cut the solid apart; most often it plainly has not.
     std::vector<std::uint32_t> joined;
-    if (!one_part || !staysOnePart (tetrahedra_, before_mending, labels_.inside, changedSince (before_mending)))
+    if (!one_part || !staysOnePart (tetrahedra_, labels_.inside, changedSince (before_mending)))
     {
       const SolidParts parts = solidParts (tetrahedra_, labels_.inside);
       joined = joinPartsThroughX (tetrahedra_, x, positions, parts, labels_, flipped_).moved;
