@@ -2,11 +2,13 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // Where the surface stage looks for small handles to cut (docs/surface.md §2): on tori made of
-// quads, a handle a few rings around is found, a large or long one is not.
+// quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
+// plate of voxels, a tunnel one voxel wide is found as one to fill, a wide hole is not.
 #include "surface/surface_handles.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -32,6 +34,49 @@ addTorus (std::uint32_t around, std::uint32_t tube, std::uint32_t first, std::ve
     }
 }
 
+/** The boundary of a plate of \a size x \a size x \a thickness unit voxels with a square hole of
+  * \a hole x \a hole voxels through its middle: each boundary square of a voxel cut into two
+  * triangles, oriented outwards. Vertex ids number the grid's corners. */
+std::vector<Triangle>
+plateWithHole (int size, int thickness, int hole)
+{
+  const auto solid = [&] (int x, int y, int z) {
+    const int lo = (size - hole) / 2;
+    const bool in_hole = x >= lo && x < lo + hole && y >= lo && y < lo + hole;
+    return x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < thickness && !in_hole;
+  };
+  const auto id = [&] (std::array<int, 3> c) {
+    return static_cast<std::uint32_t> (c[0] + (size + 1) * (c[1] + (size + 1) * c[2]));
+  };
+  std::vector<Triangle> triangles;
+  for (int x = 0; x < size; ++x)
+    for (int y = 0; y < size; ++y)
+      for (int z = 0; z < thickness; ++z)
+        for (int a = 0; a < 3; ++a)
+          for (int sign : {-1, 1})
+          {
+            std::array<int, 3> next{x, y, z};
+            next[a] += sign;
+            if (!solid (x, y, z) || solid (next[0], next[1], next[2]))
+              continue;
+            // The square on the voxel's face across axis a, counter-clockwise seen from outside.
+            const int b = (a + 1) % 3, c = (a + 2) % 3;
+            std::array<std::array<int, 3>, 4> corner;
+            const int steps[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+            for (int k = 0; k < 4; ++k)
+            {
+              const int i = sign > 0 ? k : 3 - k;
+              corner[k] = {x, y, z};
+              corner[k][a] += sign > 0;
+              corner[k][b] += steps[i][0];
+              corner[k][c] += steps[i][1];
+            }
+            triangles.push_back ({id (corner[0]), id (corner[1]), id (corner[2])});
+            triangles.push_back ({id (corner[0]), id (corner[2]), id (corner[3])});
+          }
+  return triangles;
+}
+
 /** An octahedron: a sphere, genus 0. */
 void
 addOctahedron (std::uint32_t first, std::vector<Triangle>& triangles)
@@ -49,7 +94,7 @@ TEST (SurfaceHandles, SmallTorusIsOneHandleEverywhere)
 {
   std::vector<Triangle> triangles;
   addTorus (8, 6, 0, triangles);
-  const std::vector<std::uint32_t> found = detail::verticesOnSmallHandles (triangles, 48);
+  const std::vector<std::uint32_t> found = detail::smallHandlePatches (triangles, 48).centres;
   EXPECT_FALSE (found.empty ());
   EXPECT_LT (found.back (), 48u);
 }
@@ -62,7 +107,7 @@ TEST (SurfaceHandles, LargeOrLongHandlesAreNotSmall)
   {
     std::vector<Triangle> triangles;
     addTorus (around, tube, 0, triangles);
-    EXPECT_TRUE (detail::verticesOnSmallHandles (triangles, around * tube).empty ()) << around << " x " << tube;
+    EXPECT_TRUE (detail::smallHandlePatches (triangles, around * tube).centres.empty ()) << around << " x " << tube;
   }
 }
 
@@ -73,13 +118,36 @@ TEST (SurfaceHandles, OnlyThePartWithTheSmallHandle)
   addOctahedron (0, triangles);
   addTorus (60, 30, 10, triangles);
   addTorus (8, 6, 2000, triangles);
-  const std::vector<std::uint32_t> found = detail::verticesOnSmallHandles (triangles, 2100);
+  const std::vector<std::uint32_t> found = detail::smallHandlePatches (triangles, 2100).centres;
   ASSERT_FALSE (found.empty ());
   EXPECT_GE (found.front (), 2000u);
   EXPECT_LT (found.back (), 2048u);
   triangles.clear ();
   addOctahedron (0, triangles);
-  EXPECT_TRUE (detail::verticesOnSmallHandles (triangles, 6).empty ());
+  EXPECT_TRUE (detail::smallHandlePatches (triangles, 6).centres.empty ());
+}
+
+TEST (SurfaceHandles, TunnelThroughAWallIsToBeFilled)
+{
+  // A tunnel one voxel wide through a plate three thick: its ends join only round the plate's
+  // edge, far away, but the surface opens out past both. A hole six voxels wide is a real one.
+  const int size = 30, thickness = 3;
+  const auto num_vertices = static_cast<std::uint32_t> ((size + 1) * (size + 1) * (thickness + 1));
+  const detail::SmallHandlePatches tunnel =
+      detail::smallHandlePatches (plateWithHole (size, thickness, 1), num_vertices);
+  ASSERT_FALSE (tunnel.centres.empty ());
+  for (std::size_t i = 0; i < tunnel.centres.size (); ++i)
+  {
+    EXPECT_TRUE (tunnel.fill_only[i]);
+    // Near the tunnel, whose corners have x and y 14 or 15.
+    const std::uint32_t x = tunnel.centres[i] % (size + 1), y = tunnel.centres[i] / (size + 1) % (size + 1);
+    EXPECT_LE (std::max (x > 15 ? x - 15 : 14 - std::min (x, 14u), y > 15 ? y - 15 : 14 - std::min (y, 14u)), 2u)
+        << x << " " << y;
+    // Each patch holds its centre.
+    EXPECT_TRUE (std::binary_search (tunnel.vertices.begin () + tunnel.begin[i],
+                                     tunnel.vertices.begin () + tunnel.begin[i + 1], tunnel.centres[i]));
+  }
+  EXPECT_TRUE (detail::smallHandlePatches (plateWithHole (size, thickness, 6), num_vertices).centres.empty ());
 }
 
 } // namespace

@@ -46,6 +46,11 @@ constexpr std::uint32_t MENDING_BLOCK = 1u << 14;
   * handle a few spacings long, few enough to keep the search local. */
 constexpr std::uint32_t HANDLE_REACH = 4096;
 
+/** How many tetrahedra of the outside cutSmallHandles() searches for the hull, at most: the way
+  * out of a concavity (a cup's inside, a tunnel's far end) is long, and a search that reaches the
+  * hull stops there. */
+constexpr std::uint32_t OUTSIDE_REACH = 1u << 18;
+
 /** The tetrahedra around one vertex (its star), or around one edge (its ring), and how they split
   * into connected parts on each side of the surface. */
 class Repairer
@@ -151,10 +156,23 @@ private:
     return indicesWhere (flipped_.size (), [&] (std::size_t t) { return flipped_[t] != 0; });
   }
 
-  /** Cuts the small handles of the solid's \a surface (verticesOnSmallHandles()). The candidates
-    * are the connected parts of the stars of the vertices near one and of their stars' vertices
-    * whose move changes the solid's Euler characteristic by +1, found on all threads. Weakest
-    * first, a candidate changes side, with the pockets it would enclose and the parts it would
+  /** A connected set of tetrahedra on one side whose move would cut a handle, and how strongly
+    * the labelling put them there. */
+  struct HandleCut
+  {
+    double weight;
+    std::vector<std::uint32_t> tetrahedra; // sorted
+    bool operator<(const HandleCut& o) const
+    {
+      return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
+    }
+  };
+
+  /** Cuts the small handles of the solid's \a surface (smallHandlePatches()). The candidates are
+    * the connected parts (on one side) of the stars of the vertices near one and of their stars'
+    * vertices, then the plugs of the patches near one (handlePlugs()), whose move would change the
+    * solid's Euler characteristic by +1, found on all threads. Weakest first, star parts before
+    * plugs, a candidate changes side, with the pockets it would enclose and the parts it would
     * leave pinched (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its
     * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
     * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void,
@@ -162,29 +180,26 @@ private:
     * Returns the tetrahedra moved. */
   std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface)
   {
-    const std::vector<std::uint32_t> near = verticesOnSmallHandles (surface, complex_.numVertices ());
+    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices ());
     std::vector<std::uint32_t> moved;
-    if (near.empty ())
+    if (patches.centres.empty ())
       return moved;
     const SolidEulerChange& euler_change = eulerChange ();
     StarScratch s;
-    std::vector<std::uint32_t> stars; // the tetrahedra around the vertices near a handle
-    for (std::uint32_t v : near)
+    // The vertices of the stars of the centres; of those of tunnels only, outside parts only.
+    std::array<std::vector<std::uint32_t>, 2> stars; // [1]: of tunnels
+    for (std::size_t i = 0; i < patches.centres.size (); ++i)
     {
-      tetrahedra_.gatherStar (v, s.star);
-      stars.insert (stars.end (), s.star.tetrahedra ().begin (), s.star.tetrahedra ().end ());
+      tetrahedra_.gatherStar (patches.centres[i], s.star);
+      stars[patches.fill_only[i]].insert (stars[patches.fill_only[i]].end (), s.star.tetrahedra ().begin (),
+                                          s.star.tetrahedra ().end ());
     }
-    const std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars);
-    struct Candidate
-    {
-      double weight;
-      std::vector<std::uint32_t> tetrahedra; // sorted
-      bool operator<(const Candidate& o) const
-      {
-        return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
-      }
-    };
-    tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<Candidate>>> found;
+    const std::vector<std::uint32_t> any_side = tetrahedra_.verticesOf (stars[0]);
+    std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars[1]);
+    std::vector<std::uint8_t> outside_only (around.size (), 1);
+    around.insert (around.end (), any_side.begin (), any_side.end ());
+    outside_only.resize (around.size (), 0);
+    tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
     parallelForEach (
         around.size (),
         [&] (std::size_t k) {
@@ -192,7 +207,7 @@ private:
           tetrahedra_.gatherStar (around[k], scratch.star);
           const Parts parts = split (scratch, [] (int) { return true; });
           for (std::uint32_t p = 0; p < parts.side.size (); ++p)
-            if (parts.weight[p] < std::numeric_limits<double>::infinity ())
+            if (parts.weight[p] < std::numeric_limits<double>::infinity () && !(outside_only[k] && parts.side[p]))
             {
               std::vector<std::uint32_t> part = members (scratch, parts, p);
               std::sort (part.begin (), part.end ());
@@ -201,32 +216,111 @@ private:
             }
         },
         16);
-    std::vector<Candidate> candidates;
-    for (auto& [scratch, list] : found)
-      std::move (list.begin (), list.end (), std::back_inserter (candidates));
-    std::sort (candidates.begin (), candidates.end ());
+    const std::vector<HandleCut> candidates = gathered (found);
+    const std::vector<HandleCut> plugs = handlePlugs (patches);
     std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
     std::uint32_t search = 0;
-    for (const Candidate& c : candidates)
-    {
-      const bool side = inside (c.tetrahedra.front ());
-      if (std::any_of (c.tetrahedra.begin (), c.tetrahedra.end (),
-                       [&] (std::uint32_t t) { return inside (t) != side; }))
-        continue; // moved in part
-      if (euler_change (c.tetrahedra, s.euler) < 1)
-        continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
-      const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s);
-      if (move.empty ())
-        continue; // its handle is cut, or the move would cut a side in two or leave a pinch
-      for (std::uint32_t t : move)
+    for (const std::vector<HandleCut>* list : {&candidates, &plugs})
+      for (const HandleCut& c : *list)
       {
-        labels_.inside[t] ^= 1u;
-        euler_change_->changedSide (t);
-        flipped_[t] = 1;
-        moved.push_back (t);
+        const bool side = inside (c.tetrahedra.front ());
+        if (std::any_of (c.tetrahedra.begin (), c.tetrahedra.end (),
+                         [&] (std::uint32_t t) { return inside (t) != side; }))
+          continue; // moved in part
+        if (euler_change (c.tetrahedra, s.euler) < 1)
+          continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
+        const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s);
+        if (move.empty ())
+          continue; // its handle is cut, or the move would cut a side in two or leave a pinch
+        for (std::uint32_t t : move)
+        {
+          labels_.inside[t] ^= 1u;
+          euler_change_->changedSide (t);
+          flipped_[t] = 1;
+          moved.push_back (t);
+        }
       }
-    }
     return moved;
+  }
+
+  /** The lists of all threads in one, sorted. */
+  static std::vector<HandleCut> gathered (
+      tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>>& found)
+  {
+    std::vector<HandleCut> all;
+    for (auto& [scratch, list] : found)
+      std::move (list.begin (), list.end (), std::back_inserter (all));
+    std::sort (all.begin (), all.end ());
+    return all;
+  }
+
+  /** The plugs of \a patches: per patch, the connected parts (on one side) of the tetrahedra
+    * whose four vertices are in it, whose move would change the solid's Euler characteristic by
+    * +1. Where a patch goes round a tube too wide for one star to cut, the tube's own tetrahedra
+    * within the patch make a slice of it: moved across, they cut the tube (a bridge of the solid)
+    * or fill it (a tunnel). Sorted, weakest first. */
+  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches) const
+  {
+    const SolidEulerChange& euler_change = *euler_change_;
+    tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
+    parallelForEach (
+        patches.centres.size (),
+        [&] (std::size_t i) {
+          auto& [scratch, plugs] = found.local ();
+          const auto first = patches.vertices.begin () + patches.begin[i],
+                     last = patches.vertices.begin () + patches.begin[i + 1];
+          const auto inPatch = [&] (std::uint32_t v) { return std::binary_search (first, last, v); };
+          // The tetrahedra with all their vertices in the patch, each from its lowest vertex.
+          std::vector<std::uint32_t> tetrahedra;
+          for (auto v = first; v != last; ++v)
+          {
+            tetrahedra_.gatherStar (*v, scratch.star);
+            for (std::uint32_t t : scratch.star.tetrahedra ())
+            {
+              bool all = true;
+              for (int j = 0; j < 4 && all; ++j)
+                all = tetrahedra_.vertex (t, j) >= *v && inPatch (tetrahedra_.vertex (t, j));
+              if (all)
+                tetrahedra.push_back (t);
+            }
+          }
+          std::sort (tetrahedra.begin (), tetrahedra.end ());
+          const auto indexOf = [&] (std::uint32_t t) {
+            const auto at = std::lower_bound (tetrahedra.begin (), tetrahedra.end (), t);
+            return at != tetrahedra.end () && *at == t ? static_cast<std::uint32_t> (at - tetrahedra.begin ()) : NONE;
+          };
+          UnionFind& sets = scratch.parts;
+          sets.reset (tetrahedra.size ());
+          for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
+            for (int j = 0; j < 4; ++j)
+            {
+              const std::uint32_t u = tetrahedra_.neighbour (tetrahedra[k], j);
+              const std::uint32_t at = u == OUTSIDE_HULL ? NONE : indexOf (u);
+              if (at != NONE && inside (u) == inside (tetrahedra[k]))
+                sets.attach (at, k);
+            }
+          // Each part, from its root: the tetrahedra in the order of their roots.
+          std::vector<std::pair<std::uint32_t, std::uint32_t>> by_root; // root, index
+          for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
+            by_root.push_back ({sets.find (k), k});
+          std::sort (by_root.begin (), by_root.end ());
+          for (std::size_t k = 0; k < by_root.size ();)
+          {
+            HandleCut plug{0.0, {}};
+            const std::uint32_t root = by_root[k].first;
+            for (; k < by_root.size () && by_root[k].first == root; ++k)
+            {
+              const std::uint32_t t = tetrahedra[by_root[k].second];
+              plug.tetrahedra.push_back (t);
+              plug.weight += labels_.margin[t];
+            }
+            if (!(patches.fill_only[i] && inside (plug.tetrahedra.front ())) &&
+                euler_change (plug.tetrahedra, scratch.euler) == 1)
+              plugs.push_back (std::move (plug));
+          }
+        },
+        4);
+    return gathered (found);
   }
 
   /** The move that cuts a handle with \a part (sorted, all on one side): \a part, the pockets
@@ -282,7 +376,8 @@ private:
 
   /** The tetrahedra to move for \a part (sorted, all on one side) if the tetrahedra across its
     * facets on its side stay connected without it, through at most HANDLE_REACH tetrahedra of that
-    * side from each (and, for the outside, through the space beyond the hull); empty if not. A
+    * side from each (and, for the outside, through the space beyond the hull, which a search
+    * goes on looking for up to OUTSIDE_REACH tetrahedra); empty if not. A
     * move into the solid may enclose small pockets of the outside (a search from them ends within
     * the reach, short of the hull): they move with it, as fillUnsampledVoids() would fill them.
     * \a reached: per tetrahedron, the last \a search to reach it. */
@@ -314,7 +409,9 @@ private:
       queue.assign (1, seed);
       reached[seed] = search;
       bool hull_reached = false;
-      for (std::size_t k = 0; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
+      for (std::size_t k = 0; k < queue.size () && (queue.size () <= HANDLE_REACH ||
+                                                    (!side && !hull_reached && queue.size () <= OUTSIDE_REACH));
+           ++k)
         for (int i = 0; i < 4; ++i)
         {
           const std::uint32_t u = tetrahedra_.neighbour (queue[k], i);

@@ -35,8 +35,9 @@ struct SolidRepair
   *   touches the surface moved out (or in), which puts it on the surface; with \a keep_buried
   *   (the points sample a volume) a vertex buried from the start stays inside.
   * - parts of the solid cut off from the rest are joined to it along X (joinPartsThroughX());
-  * - then small handles (verticesOnSmallHandles()) are cut where moving one connected part of a
-  *   star takes exactly one handle away;
+  * - then small handles (smallHandlePatches()) are cut or filled where moving one connected part
+  *   of a star, or of the tetrahedra within a patch around the handle, takes exactly one handle
+  *   away;
   * - first, the voids no inner surface's points show are filled (fillUnsampledVoids()).
   * Each tetrahedron changes side at most once in the mending, so the repair ends; a pinch it
   * cannot mend is left to the pinch split (splitSolidPinches()).

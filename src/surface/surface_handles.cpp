@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <iterator>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -67,11 +68,19 @@ oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround&
 struct PatchScratch
 {
   std::vector<std::uint32_t> in_patch, seen; // per vertex: the stamp of the last patch (search) to reach it
-  std::uint32_t stamp = 0;
+  std::uint32_t stamp = 0, search = 0;
   std::vector<std::uint32_t> vertices, front, next;
   std::vector<Edge> edges;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_of; // boundary vertex, its loop
   UnionFind loops;
+};
+
+/** What a patch says of the surface near its centre. */
+enum class HandleKind
+{
+  none,   ///< no small handle
+  handle, ///< a small handle, to be cut or filled
+  tunnel  ///< a thin tube between two wider parts of the surface, to be filled only
 };
 
 /** The patches of a closed surface around its vertices, and what their topology says. */
@@ -82,8 +91,11 @@ public:
     : triangles_ (triangles), around_ (triangles, n), opposite_ (oppositeVertices (triangles, around_)), n_ (n)
   {}
 
-  /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube? */
-  bool onSmallHandle (std::uint32_t v, PatchScratch& s) const
+  /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube?
+    * A tube whose ends the surface joins only far away is a tunnel when the surface opens out
+    * past both of them, as through a wall: a hollow tube is a hole the points do not resolve, and
+    * filling it is right, where a solid one (a thin wire over a wide hole) is a part they show. */
+  HandleKind onSmallHandle (std::uint32_t v, PatchScratch& s) const
   {
     if (s.in_patch.empty ())
     {
@@ -133,7 +145,7 @@ public:
       }
     const long chi = long (s.vertices.size ()) - (3 * faces + boundary) / 2 + faces;
     if (chi >= 1)
-      return false; // a disc (or a whole small sphere)
+      return HandleKind::none; // a disc (or a whole small sphere)
     // Its boundary loops.
     s.loop_of.clear ();
     for (const Edge& e : s.edges)
@@ -159,8 +171,15 @@ public:
       loops += s.loop_of[i].second == i;
     }
     if (2 - chi - loops >= 2)
-      return true; // the patch has a genus of its own
-    return loops >= 2 && loopsJoinNear (s, stamp, local);
+      return HandleKind::handle; // the patch has a genus of its own
+    if (loops < 2)
+      return HandleKind::none;
+    if (loopsJoinNear (s, stamp, local))
+      return HandleKind::handle;
+    int open = 0;
+    for (std::uint32_t i = 0; i < s.loop_of.size () && open < 2; ++i)
+      open += s.loop_of[i].second == i && opensOut (s, stamp, i);
+    return open >= 2 ? HandleKind::tunnel : HandleKind::none;
   }
 
   /** Keeps, of the vertices flagged in \a look, those of a maximal independent set, taken in
@@ -192,13 +211,13 @@ private:
   template <class Local>
   bool loopsJoinNear (PatchScratch& s, std::uint32_t stamp, const Local& local) const
   {
-    const std::uint32_t first = s.loop_of.front ().second;
+    const std::uint32_t first = s.loop_of.front ().second, search = ++s.search;
     s.front.clear ();
     for (const auto& [w, loop] : s.loop_of)
       if (loop == first)
       {
         s.front.push_back (w);
-        s.seen[w] = stamp;
+        s.seen[w] = search;
       }
     bool joined = false;
     for (int ring = 0; ring < 2 * HANDLE_RINGS && !joined && !s.front.empty (); ++ring)
@@ -206,11 +225,11 @@ private:
       s.next.clear ();
       for (std::uint32_t u : s.front)
         forNeighbours (u, [&] (std::uint32_t w) {
-          if (s.seen[w] == stamp)
+          if (s.seen[w] == search)
             return;
           if (s.in_patch[w] != stamp)
           {
-            s.seen[w] = stamp;
+            s.seen[w] = search;
             s.next.push_back (w);
           }
           else if (s.in_patch[u] != stamp) // from off the patch onto its boundary
@@ -224,6 +243,36 @@ private:
     return joined;
   }
 
+  /** Does the surface open out past the patch's boundary loop \a loop: does a search off the
+    * patch from it reach, 2 HANDLE_RINGS rings on, more than twice as many vertices as the loop
+    * has? Along a tube the front stays as long as the loop; on a wall it grows with every ring. */
+  bool opensOut (PatchScratch& s, std::uint32_t stamp, std::uint32_t loop) const
+  {
+    const std::uint32_t search = ++s.search;
+    s.front.clear ();
+    for (const auto& [w, l] : s.loop_of)
+      if (l == loop)
+      {
+        s.front.push_back (w);
+        s.seen[w] = search;
+      }
+    const std::size_t length = s.front.size ();
+    for (int ring = 0; ring < 2 * HANDLE_RINGS && !s.front.empty (); ++ring)
+    {
+      s.next.clear ();
+      for (std::uint32_t u : s.front)
+        forNeighbours (u, [&] (std::uint32_t w) {
+          if (s.seen[w] != search && s.in_patch[w] != stamp)
+          {
+            s.seen[w] = search;
+            s.next.push_back (w);
+          }
+        });
+      s.front.swap (s.next);
+    }
+    return s.front.size () > 2 * length;
+  }
+
   const std::vector<Triangle>& triangles_;
   const TrianglesAround around_;
   const std::vector<std::array<std::uint32_t, 3>> opposite_;
@@ -232,8 +281,8 @@ private:
 
 } // namespace
 
-std::vector<std::uint32_t>
-verticesOnSmallHandles (const std::vector<Triangle>& triangles, std::uint32_t num_vertices)
+SmallHandlePatches
+smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices)
 {
   // The genus of each connected part, from V - E + F with E = 3F / 2.
   UnionFind parts (num_vertices);
@@ -262,23 +311,44 @@ verticesOnSmallHandles (const std::vector<Triangle>& triangles, std::uint32_t nu
     look[v] = on[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
     any = any || look[v];
   }
+  SmallHandlePatches out;
   if (!any)
-    return {};
+    return out;
   const HandleFinder finder (triangles, num_vertices);
   finder.keepCentres (look);
-  tbb::enumerable_thread_specific<PatchScratch> scratches;
-  std::vector<std::uint8_t> found (num_vertices, 0);
+  struct Found
+  {
+    std::uint32_t centre;
+    bool fill_only;
+    std::vector<std::uint32_t> patch; // sorted
+    bool operator<(const Found& o) const { return centre < o.centre; }
+  };
+  tbb::enumerable_thread_specific<std::pair<PatchScratch, std::vector<Found>>> found;
   parallelForEach (
       num_vertices,
       [&] (std::size_t v) {
-        if (look[v])
-          found[v] = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratches.local ());
+        if (!look[v])
+          return;
+        auto& [scratch, list] = found.local ();
+        const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch);
+        if (kind == HandleKind::none)
+          return;
+        list.push_back ({static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, scratch.vertices});
+        std::sort (list.back ().patch.begin (), list.back ().patch.end ());
       },
       256);
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t v = 0; v < num_vertices; ++v)
-    if (found[v])
-      out.push_back (v);
+  std::vector<Found> all;
+  for (auto& [scratch, list] : found)
+    std::move (list.begin (), list.end (), std::back_inserter (all));
+  std::sort (all.begin (), all.end ());
+  out.begin.push_back (0);
+  for (const Found& f : all)
+  {
+    out.centres.push_back (f.centre);
+    out.fill_only.push_back (f.fill_only);
+    out.vertices.insert (out.vertices.end (), f.patch.begin (), f.patch.end ());
+    out.begin.push_back (static_cast<std::uint32_t> (out.vertices.size ()));
+  }
   return out;
 }
 

@@ -9,6 +9,17 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief The vertices of a closed surface near which it has a small handle, and their patches. */
+struct SmallHandlePatches
+{
+  std::vector<std::uint32_t> centres; ///< ascending vertex ids
+  /** Per centre: its patch goes round a tunnel (a thin tube between two wider parts of the
+    * surface), which may be filled but not cut. */
+  std::vector<std::uint8_t> fill_only;
+  /** The patch around centres[i]: the vertices vertices[begin[i] .. begin[i + 1]), ascending. */
+  std::vector<std::uint32_t> begin, vertices;
+};
+
 /** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
   * a few rings of triangles around the vertex go round.
   *
@@ -18,13 +29,14 @@ namespace pcl_wrap::detail
   * within HANDLE_RINGS rings make a patch; it is a disc where the surface has no small handle. Where
   * it is not, it holds a handle (its own genus is above zero), or it goes round a thin tube: a
   * handle's when the rest of the surface joins the patch's boundary loops near the patch (within
-  * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off.
-  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
-  * \return ascending vertex ids */
-std::vector<std::uint32_t>
-verticesOnSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
+  * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off, a
+  * tunnel's when the surface opens out past both ends (a hole through a wall), a ring's when it
+  * does not (the tube closes far away).
+  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices */
+SmallHandlePatches
+smallHandlePatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
 
-/** \brief How many rings of triangles around a vertex verticesOnSmallHandles() looks at. */
+/** \brief How many rings of triangles around a vertex smallHandlePatches() looks at. */
 constexpr int HANDLE_RINGS = 3;
 
 } // namespace pcl_wrap::detail
