@@ -170,8 +170,8 @@ private:
 
   /** Cuts the small handles of the solid's \a surface (smallHandlePatches()). The candidates are
     * the connected parts (on one side) of the stars of the vertices near one and of their stars'
-    * vertices, then the plugs of the patches near one (handlePlugs()), whose move would change the
-    * solid's Euler characteristic by +1, found on all threads. Weakest first, star parts before
+    * vertices whose move would change the solid's Euler characteristic by +1, then the plugs of
+    * the patches near one (handlePlugs()), found on all threads. Weakest first, star parts before
     * plugs, a candidate changes side, with the pockets it would enclose and the parts it would
     * leave pinched (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its
     * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
@@ -217,7 +217,11 @@ private:
         },
         16);
     const std::vector<HandleCut> candidates = gathered (found);
-    const std::vector<HandleCut> plugs = handlePlugs (patches);
+    std::vector<std::uint8_t> on_surface (complex_.numVertices (), 0);
+    for (const auto& triangle : surface)
+      for (std::uint32_t v : triangle)
+        on_surface[v] = 1;
+    const std::vector<HandleCut> plugs = handlePlugs (patches, on_surface);
     std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
     std::uint32_t search = 0;
     for (const std::vector<HandleCut>* list : {&candidates, &plugs})
@@ -254,12 +258,14 @@ private:
     return all;
   }
 
-  /** The plugs of \a patches: per patch, the connected parts (on one side) of the tetrahedra
-    * whose four vertices are in it, whose move would change the solid's Euler characteristic by
-    * +1. Where a patch goes round a tube too wide for one star to cut, the tube's own tetrahedra
-    * within the patch make a slice of it: moved across, they cut the tube (a bridge of the solid)
-    * or fill it (a tunnel). Sorted, weakest first. */
-  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches) const
+  /** The plugs of \a patches: per patch, the connected parts (on one side, the outside only for
+    * a tunnel) of the tetrahedra whose vertices are in it or off the surface (\a on_surface: per
+    * vertex), whose move would raise the solid's Euler characteristic (by more than 1 where it
+    * encloses pockets, which closedMove() adds). Where a patch goes round a tube too wide for one
+    * star to cut, the tube's own tetrahedra within the patch make a slice of it: moved across,
+    * they cut the tube (a bridge of the solid) or fill it (a tunnel). Sorted, weakest first. */
+  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches,
+                                      const std::vector<std::uint8_t>& on_surface) const
   {
     const SolidEulerChange& euler_change = *euler_change_;
     tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
@@ -270,7 +276,8 @@ private:
           const auto first = patches.vertices.begin () + patches.begin[i],
                      last = patches.vertices.begin () + patches.begin[i + 1];
           const auto inPatch = [&] (std::uint32_t v) { return std::binary_search (first, last, v); };
-          // The tetrahedra with all their vertices in the patch, each from its lowest vertex.
+          // The tetrahedra with all their vertices in the patch or off the surface, each from its
+          // lowest vertex in the patch.
           std::vector<std::uint32_t> tetrahedra;
           for (auto v = first; v != last; ++v)
           {
@@ -279,7 +286,10 @@ private:
             {
               bool all = true;
               for (int j = 0; j < 4 && all; ++j)
-                all = tetrahedra_.vertex (t, j) >= *v && inPatch (tetrahedra_.vertex (t, j));
+              {
+                const std::uint32_t w = tetrahedra_.vertex (t, j);
+                all = inPatch (w) ? w >= *v : !on_surface[w];
+              }
               if (all)
                 tetrahedra.push_back (t);
             }
@@ -315,7 +325,7 @@ private:
               plug.weight += labels_.margin[t];
             }
             if (!(patches.fill_only[i] && inside (plug.tetrahedra.front ())) &&
-                euler_change (plug.tetrahedra, scratch.euler) == 1)
+                euler_change (plug.tetrahedra, scratch.euler) >= 1)
               plugs.push_back (std::move (plug));
           }
         },
