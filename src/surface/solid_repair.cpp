@@ -217,11 +217,7 @@ private:
         },
         16);
     const std::vector<HandleCut> candidates = gathered (found);
-    std::vector<std::uint8_t> on_surface (complex_.numVertices (), 0);
-    for (const auto& triangle : surface)
-      for (std::uint32_t v : triangle)
-        on_surface[v] = 1;
-    const std::vector<HandleCut> plugs = handlePlugs (patches, on_surface);
+    const std::vector<HandleCut> plugs = handlePlugs (patches);
     std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
     std::uint32_t search = 0;
     for (const std::vector<HandleCut>* list : {&candidates, &plugs})
@@ -259,13 +255,12 @@ private:
   }
 
   /** The plugs of \a patches: per patch, the connected parts (on one side, the outside only for
-    * a tunnel) of the tetrahedra whose vertices are in it or off the surface (\a on_surface: per
-    * vertex), whose move would raise the solid's Euler characteristic (by more than 1 where it
-    * encloses pockets, which closedMove() adds). Where a patch goes round a tube too wide for one
-    * star to cut, the tube's own tetrahedra within the patch make a slice of it: moved across,
-    * they cut the tube (a bridge of the solid) or fill it (a tunnel). Sorted, weakest first. */
-  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches,
-                                      const std::vector<std::uint8_t>& on_surface) const
+    * a tunnel) of the tetrahedra whose four vertices are in it, whose move would raise the
+    * solid's Euler characteristic (by more than 1 where it encloses pockets, which closedMove()
+    * adds). Where a patch goes round a tube too wide for one star to cut, the tube's own
+    * tetrahedra within the patch make a slice of it: moved across, they cut the tube (a bridge of
+    * the solid) or fill it (a tunnel). Sorted, weakest first. */
+  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches) const
   {
     const SolidEulerChange& euler_change = *euler_change_;
     tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
@@ -276,8 +271,7 @@ private:
           const auto first = patches.vertices.begin () + patches.begin[i],
                      last = patches.vertices.begin () + patches.begin[i + 1];
           const auto inPatch = [&] (std::uint32_t v) { return std::binary_search (first, last, v); };
-          // The tetrahedra with all their vertices in the patch or off the surface, each from its
-          // lowest vertex in the patch.
+          // The tetrahedra with all their vertices in the patch, each from its lowest vertex.
           std::vector<std::uint32_t> tetrahedra;
           for (auto v = first; v != last; ++v)
           {
@@ -286,10 +280,7 @@ private:
             {
               bool all = true;
               for (int j = 0; j < 4 && all; ++j)
-              {
-                const std::uint32_t w = tetrahedra_.vertex (t, j);
-                all = inPatch (w) ? w >= *v : !on_surface[w];
-              }
+                all = tetrahedra_.vertex (t, j) >= *v && inPatch (tetrahedra_.vertex (t, j));
               if (all)
                 tetrahedra.push_back (t);
             }
