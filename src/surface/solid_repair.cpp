@@ -194,11 +194,14 @@ private:
       stars[patches.fill_only[i]].insert (stars[patches.fill_only[i]].end (), s.star.tetrahedra ().begin (),
                                           s.star.tetrahedra ().end ());
     }
-    const std::vector<std::uint32_t> any_side = tetrahedra_.verticesOf (stars[0]);
-    std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars[1]);
-    std::vector<std::uint8_t> outside_only (around.size (), 1);
-    around.insert (around.end (), any_side.begin (), any_side.end ());
-    outside_only.resize (around.size (), 0);
+    // Each vertex once: one in both kinds of star gives the parts of both sides.
+    std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars[0]), of_tunnels_only;
+    const std::vector<std::uint32_t> of_tunnels = tetrahedra_.verticesOf (stars[1]);
+    std::set_difference (of_tunnels.begin (), of_tunnels.end (), around.begin (), around.end (),
+                         std::back_inserter (of_tunnels_only));
+    std::vector<std::uint8_t> outside_only (around.size (), 0);
+    around.insert (around.end (), of_tunnels_only.begin (), of_tunnels_only.end ());
+    outside_only.resize (around.size (), 1);
     tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
     parallelForEach (
         around.size (),
@@ -270,51 +273,12 @@ private:
           auto& [scratch, plugs] = found.local ();
           const auto first = patches.vertices.begin () + patches.begin[i],
                      last = patches.vertices.begin () + patches.begin[i + 1];
-          const auto inPatch = [&] (std::uint32_t v) { return std::binary_search (first, last, v); };
-          // The tetrahedra with all their vertices in the patch, each from its lowest vertex.
-          std::vector<std::uint32_t> tetrahedra;
-          for (auto v = first; v != last; ++v)
+          for (std::vector<std::uint32_t>& part :
+               partsOnOneSide (tetrahedraWithin (first, last, scratch.star), scratch.parts))
           {
-            tetrahedra_.gatherStar (*v, scratch.star);
-            for (std::uint32_t t : scratch.star.tetrahedra ())
-            {
-              bool all = true;
-              for (int j = 0; j < 4 && all; ++j)
-                all = tetrahedra_.vertex (t, j) >= *v && inPatch (tetrahedra_.vertex (t, j));
-              if (all)
-                tetrahedra.push_back (t);
-            }
-          }
-          std::sort (tetrahedra.begin (), tetrahedra.end ());
-          const auto indexOf = [&] (std::uint32_t t) {
-            const auto at = std::lower_bound (tetrahedra.begin (), tetrahedra.end (), t);
-            return at != tetrahedra.end () && *at == t ? static_cast<std::uint32_t> (at - tetrahedra.begin ()) : NONE;
-          };
-          UnionFind& sets = scratch.parts;
-          sets.reset (tetrahedra.size ());
-          for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
-            for (int j = 0; j < 4; ++j)
-            {
-              const std::uint32_t u = tetrahedra_.neighbour (tetrahedra[k], j);
-              const std::uint32_t at = u == OUTSIDE_HULL ? NONE : indexOf (u);
-              if (at != NONE && inside (u) == inside (tetrahedra[k]))
-                sets.attach (at, k);
-            }
-          // Each part, from its root: the tetrahedra in the order of their roots.
-          std::vector<std::pair<std::uint32_t, std::uint32_t>> by_root; // root, index
-          for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
-            by_root.push_back ({sets.find (k), k});
-          std::sort (by_root.begin (), by_root.end ());
-          for (std::size_t k = 0; k < by_root.size ();)
-          {
-            HandleCut plug{0.0, {}};
-            const std::uint32_t root = by_root[k].first;
-            for (; k < by_root.size () && by_root[k].first == root; ++k)
-            {
-              const std::uint32_t t = tetrahedra[by_root[k].second];
-              plug.tetrahedra.push_back (t);
+            HandleCut plug{0.0, std::move (part)};
+            for (std::uint32_t t : plug.tetrahedra)
               plug.weight += labels_.margin[t];
-            }
             if (!(patches.fill_only[i] && inside (plug.tetrahedra.front ())) &&
                 euler_change (plug.tetrahedra, scratch.euler) >= 1)
               plugs.push_back (std::move (plug));
@@ -322,6 +286,58 @@ private:
         },
         4);
     return gathered (found);
+  }
+
+  /** The tetrahedra whose four vertices are all in [\a first, \a last) (ascending vertex ids),
+    * ascending; \a star is scratch. */
+  template <class It>
+  std::vector<std::uint32_t> tetrahedraWithin (It first, It last, Star& star) const
+  {
+    const auto within = [&] (std::uint32_t v) { return std::binary_search (first, last, v); };
+    std::vector<std::uint32_t> tetrahedra;
+    for (auto v = first; v != last; ++v)
+    {
+      tetrahedra_.gatherStar (*v, star);
+      for (std::uint32_t t : star.tetrahedra ())
+      {
+        bool all = true; // and v is the lowest of them, so each is listed once
+        for (int j = 0; j < 4 && all; ++j)
+          all = tetrahedra_.vertex (t, j) >= *v && within (tetrahedra_.vertex (t, j));
+        if (all)
+          tetrahedra.push_back (t);
+      }
+    }
+    std::sort (tetrahedra.begin (), tetrahedra.end ());
+    return tetrahedra;
+  }
+
+  /** The connected parts of \a tetrahedra (ascending), each on one side, joined across their
+    * facets; each part ascending. \a sets is scratch. */
+  std::vector<std::vector<std::uint32_t>> partsOnOneSide (const std::vector<std::uint32_t>& tetrahedra,
+                                                          UnionFind& sets) const
+  {
+    sets.reset (tetrahedra.size ());
+    for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
+      for (int j = 0; j < 4; ++j)
+      {
+        const std::uint32_t u = tetrahedra_.neighbour (tetrahedra[k], j);
+        const auto at = std::lower_bound (tetrahedra.begin (), tetrahedra.end (), u);
+        if (u != OUTSIDE_HULL && at != tetrahedra.end () && *at == u && inside (u) == inside (tetrahedra[k]))
+          sets.attach (static_cast<std::uint32_t> (at - tetrahedra.begin ()), k);
+      }
+    // The tetrahedra in the order of their roots, each root's in ascending order.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> by_root; // root, index
+    for (std::uint32_t k = 0; k < tetrahedra.size (); ++k)
+      by_root.push_back ({sets.find (k), k});
+    std::sort (by_root.begin (), by_root.end ());
+    std::vector<std::vector<std::uint32_t>> parts;
+    for (std::size_t k = 0; k < by_root.size (); ++k)
+    {
+      if (k == 0 || by_root[k].first != by_root[k - 1].first)
+        parts.emplace_back ();
+      parts.back ().push_back (tetrahedra[by_root[k].second]);
+    }
+    return parts;
   }
 
   /** The move that cuts a handle with \a part (sorted, all on one side): \a part, the pockets

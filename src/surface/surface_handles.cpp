@@ -206,19 +206,27 @@ private:
           f (w);
   }
 
+  /** Starts a new search at the vertices of the patch's boundary loop \a loop: they make the
+    * front, marked seen by the search. Returns the search's stamp. */
+  static std::uint32_t startAtLoop (PatchScratch& s, std::uint32_t loop)
+  {
+    const std::uint32_t search = ++s.search;
+    s.front.clear ();
+    for (const auto& [w, l] : s.loop_of)
+      if (l == loop)
+      {
+        s.front.push_back (w);
+        s.seen[w] = search;
+      }
+    return search;
+  }
+
   /** Does a path off the patch, within 2 HANDLE_RINGS rings, join its first boundary loop to
     * another? */
   template <class Local>
   bool loopsJoinNear (PatchScratch& s, std::uint32_t stamp, const Local& local) const
   {
-    const std::uint32_t first = s.loop_of.front ().second, search = ++s.search;
-    s.front.clear ();
-    for (const auto& [w, loop] : s.loop_of)
-      if (loop == first)
-      {
-        s.front.push_back (w);
-        s.seen[w] = search;
-      }
+    const std::uint32_t first = s.loop_of.front ().second, search = startAtLoop (s, first);
     bool joined = false;
     for (int ring = 0; ring < 2 * HANDLE_RINGS && !joined && !s.front.empty (); ++ring)
     {
@@ -248,14 +256,7 @@ private:
     * has? Along a tube the front stays as long as the loop; on a wall it grows with every ring. */
   bool opensOut (PatchScratch& s, std::uint32_t stamp, std::uint32_t loop) const
   {
-    const std::uint32_t search = ++s.search;
-    s.front.clear ();
-    for (const auto& [w, l] : s.loop_of)
-      if (l == loop)
-      {
-        s.front.push_back (w);
-        s.seen[w] = search;
-      }
+    const std::uint32_t search = startAtLoop (s, loop);
     const std::size_t length = s.front.size ();
     for (int ring = 0; ring < 2 * HANDLE_RINGS && !s.front.empty (); ++ring)
     {
