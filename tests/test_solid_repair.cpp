@@ -3,7 +3,8 @@
 //
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
 // vertex against the surface's links found by brute force, the join of parts cut off the
-// solid through X, and the points left floating in a cut, brought back.
+// solid through X, the points left floating in a cut, brought back, and webs across a gap cut
+// where bars the points sample stay.
 #include "wrap/boundary.h"
 #include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <random>
@@ -236,6 +238,82 @@ TEST_F (CutSphereRepair, BringsOnThePointsLeftFloatingInACut)
   EXPECT_TRUE (surface.closed_manifold);
   EXPECT_EQ (surface.components, 1u);
   EXPECT_EQ (surface.euler, 2) << "a sphere";
+}
+
+/** Where the tubes across the gap between the two balls run: at y = +-TUBE_Y, z = 0. */
+constexpr double TUBE_Y = 0.35;
+constexpr double GAP = 0.15; // about five spacings
+
+/** The spheres of two balls GAP apart along x and, when \a bar_spacing > 0, a thin bar across the
+  * gap along each tube, sampled by rings of six points of radius \a bar_spacing, as far apart. */
+std::vector<Point3>
+twoSpheresApart (double bar_spacing)
+{
+  std::vector<Point3> points = sphereSample (3000, 5);
+  for (const Point3& q : sphereSample (3000, 6))
+    points.push_back ({q[0] + 2 + GAP, q[1], q[2]});
+  const double surface_x = std::sqrt (1 - TUBE_Y * TUBE_Y);
+  int ring = 0;
+  for (double x = surface_x; bar_spacing > 0 && x < 2 + GAP - surface_x; x += bar_spacing, ++ring)
+    for (double y : {-TUBE_Y, TUBE_Y})
+      for (int k = 0; k < 6; ++k)
+      {
+        const double angle = (k + 0.5 * (ring % 2)) * M_PI / 3;
+        points.push_back ({x, y + bar_spacing * std::cos (angle), bar_spacing * std::sin (angle)});
+      }
+  return points;
+}
+
+/** The repaired surface of twoSpheresApart (\a bar_spacing), labelled as the labelling labels it
+  * and then tied by two thin tubes across the gap, as a labelling leaves between close objects:
+  * the tetrahedra whose centroids lie within 0.04 of either tube's line, between the balls, are
+  * moved inside. \a points: how many points it has. */
+SurfaceReport
+repairedTwoBallsTiedByTubes (double bar_spacing, std::size_t& points)
+{
+  const Pipeline p (twoSpheresApart (bar_spacing));
+  detail::Subcomplex x (p.complex);
+  detail::Retraction (x, p.classification).retract ();
+  detail::SolidLabelling labelling (p.complex.vertexArray (3), p.tetrahedra, p.points, p.weights);
+  labelling.flood ();
+  detail::SolidLabels labels = labelling.labels (x);
+  for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+  {
+    Point3 centroid{0, 0, 0};
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 3; ++c)
+        centroid[c] += p.points[p.complex.vertex (3, t, i)][c] / 4;
+    for (double y : {-TUBE_Y, TUBE_Y})
+      if (centroid[0] > 0.5 && centroid[0] < 1.5 + GAP && std::hypot (centroid[1] - y, centroid[2]) < 0.04)
+        labels.inside[t] = 1;
+  }
+  EXPECT_EQ (solidParts (p.complex, labels.inside), 1u) << "tied";
+  points = p.points.size ();
+  const detail::SolidRepair repair = detail::repairSolid (p.tetrahedra, x, p.points, labels);
+  return describeSurface (repairedSurface (p.tetrahedra, labels.inside, repair.pinched));
+}
+
+TEST (SolidRepair, CutsWebsAcrossAGapButKeepsBarsThePointsSample)
+{
+  struct Case
+  {
+    double bar_spacing;
+    std::size_t components;
+    long euler;
+  };
+  // No point samples the tubes: a handle and a bridge of the solid across an empty gap, both cut
+  // (two spheres). Or the points sample a thin bar along each tube: they show the bars, which
+  // stay (one handle between the two balls).
+  for (const Case& c : {Case{0, 2, 4}, Case{0.035, 1, 0}})
+  {
+    SCOPED_TRACE (c.bar_spacing);
+    std::size_t points = 0;
+    const SurfaceReport surface = repairedTwoBallsTiedByTubes (c.bar_spacing, points);
+    EXPECT_TRUE (surface.closed_manifold);
+    EXPECT_EQ (surface.components, c.components);
+    EXPECT_EQ (surface.euler, c.euler);
+    EXPECT_EQ (surface.vertices, points);
+  }
 }
 
 } // namespace

@@ -3,7 +3,7 @@
 //
 // Where the surface stage looks for small handles to cut (docs/surface.md §2): on tori made of
 // quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
-// plate of voxels, a tunnel one voxel wide is found as one to fill, a wide hole is not.
+// plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not.
 #include "surface/surface_handles.h"
 
 #include <gtest/gtest.h>
@@ -127,25 +127,25 @@ TEST (SurfaceHandles, OnlyThePartWithTheSmallHandle)
   EXPECT_TRUE (detail::smallHandlePatches (triangles, 6).centres.empty ());
 }
 
-TEST (SurfaceHandles, TunnelThroughAWallIsToBeFilled)
+TEST (SurfaceHandles, TunnelThroughAWallIsFound)
 {
   // A tunnel one voxel wide through a plate three thick: its ends join only round the plate's
   // edge, far away, but the surface opens out past both. A hole six voxels wide is a real one.
   const int size = 30, thickness = 3;
   const auto num_vertices = static_cast<std::uint32_t> ((size + 1) * (size + 1) * (thickness + 1));
-  const detail::SmallHandlePatches tunnel =
+  const detail::SmallHandlePatches plate =
       detail::smallHandlePatches (plateWithHole (size, thickness, 1), num_vertices);
-  ASSERT_FALSE (tunnel.centres.empty ());
-  for (std::size_t i = 0; i < tunnel.centres.size (); ++i)
+  ASSERT_FALSE (plate.centres.empty ());
+  for (std::size_t i = 0; i < plate.centres.size (); ++i)
   {
-    EXPECT_TRUE (tunnel.fill_only[i]);
+    EXPECT_TRUE (plate.tunnel[i]);
     // Near the tunnel, whose corners have x and y 14 or 15.
-    const std::uint32_t x = tunnel.centres[i] % (size + 1), y = tunnel.centres[i] / (size + 1) % (size + 1);
+    const std::uint32_t x = plate.centres[i] % (size + 1), y = plate.centres[i] / (size + 1) % (size + 1);
     EXPECT_LE (std::max (x > 15 ? x - 15 : 14 - std::min (x, 14u), y > 15 ? y - 15 : 14 - std::min (y, 14u)), 2u)
         << x << " " << y;
     // Each patch holds its centre.
-    EXPECT_TRUE (std::binary_search (tunnel.vertices.begin () + tunnel.begin[i],
-                                     tunnel.vertices.begin () + tunnel.begin[i + 1], tunnel.centres[i]));
+    EXPECT_TRUE (std::binary_search (plate.vertices.begin () + plate.begin[i],
+                                     plate.vertices.begin () + plate.begin[i + 1], plate.centres[i]));
   }
   EXPECT_TRUE (detail::smallHandlePatches (plateWithHole (size, thickness, 6), num_vertices).centres.empty ());
 }

@@ -21,11 +21,6 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** A join may close a gap up to this many times the spacing at its ends: one the sampling does not
-  * resolve. Parts cut apart by the labelling lie within 1.1 spacings of each other; separate
-  * objects, as close as two spacings, are apart. */
-constexpr double UNRESOLVED_GAP = 1.5;
-
 /** How many tetrahedra bringFloatingPointsOn() expands from a point, at most: a path of X's
   * tetrahedra that reaches no further ends in a stray point's own few tetrahedra. */
 constexpr std::size_t FLOATING_REACH = 256;
@@ -40,8 +35,7 @@ public:
 
   /** Is the gap between part \a p and part \a q along the tetrahedra of \a chain no wider than
     * UNRESOLVED_GAP spacings: some vertex of p on the chain as near some vertex of q on it, in
-    * units of the smaller of their spacings (the shortest Delaunay edge at each: a lone point of a
-    * coarse sample has a long one)? */
+    * units of the smaller of their spacings (spacingAt())? */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
     const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (chain);
@@ -51,15 +45,12 @@ public:
       // One look at v's star: whether it is on p or q, and its shortest Delaunay edge.
       tetrahedra_.gatherStar (v, star_);
       bool in_p = false, in_q = false;
-      double spacing = std::numeric_limits<double>::infinity ();
       for (std::uint32_t t : star_.tetrahedra ())
       {
         in_p = in_p || part_[t] == p;
         in_q = in_q || part_[t] == q;
-        for (int i = 0; i < 4; ++i)
-          if (tetrahedra_.vertex (t, i) != v)
-            spacing = std::min (spacing, distance (positions_[v], positions_[tetrahedra_.vertex (t, i)]));
       }
+      const double spacing = in_p || in_q ? spacingAt (tetrahedra_, star_, v, positions_) : 0.0;
       if (in_p)
         on_p.emplace_back (v, spacing);
       if (in_q)
@@ -207,6 +198,17 @@ moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::ve
 }
 
 } // namespace
+
+double
+spacingAt (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions)
+{
+  double spacing = std::numeric_limits<double>::infinity ();
+  for (std::uint32_t t : star.tetrahedra ())
+    for (int i = 0; i < 4; ++i)
+      if (tetrahedra.vertex (t, i) != v)
+        spacing = std::min (spacing, distance (positions[v], positions[tetrahedra.vertex (t, i)]));
+  return spacing;
+}
 
 SolidJoin
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,

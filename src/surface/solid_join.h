@@ -20,6 +20,17 @@ namespace pcl_wrap::detail
   * separate object of bench/corpus.py has 300, its smallest inner shell 1,200. */
 constexpr std::size_t FRAGMENT_VERTICES = 32;
 
+/** \brief Two points closer than this many times the smaller of their spacings are on a gap the
+  * sampling does not resolve: a join may close it, and no cut may open it. Parts cut apart by the
+  * labelling lie within 1.1 spacings of each other; separate objects, as close as two spacings,
+  * are apart. */
+constexpr double UNRESOLVED_GAP = 1.5;
+
+/** \brief The spacing at vertex \a v, whose star \a star holds: its shortest Delaunay edge (a lone
+  * point of a coarse sample has a long one). */
+double
+spacingAt (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions);
+
 /** \brief What joinPartsThroughX() did. */
 struct SolidJoin
 {
@@ -33,7 +44,7 @@ struct SolidJoin
   * sheet, where the retraction thinned a part of the solid to nothing). X is contractible: it ties
   * a part cut off at a neck (a horn, a leg) to the rest, but it also reaches across the gaps
   * between separate objects. So a path ends only at a part it reaches across a gap the sampling
-  * does not resolve (its ends within 1.5 spacings), except from a fragment of fewer than 32
+  * does not resolve (its ends within UNRESOLVED_GAP spacings), except from a fragment of fewer than 32
   * vertices, too small to be an object of its own, which joins the first part it reaches.
   * \param[in] positions per vertex
   * \param[in] parts the parts of the solid \a labels

@@ -8,6 +8,7 @@
 #include "surface/solid_parts.h"
 #include "surface/solid_voids.h"
 #include "surface/surface_handles.h"
+#include "util/distance.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 #include "wrap/boundary.h"
@@ -50,6 +51,11 @@ constexpr std::uint32_t HANDLE_REACH = 4096;
   * out of a concavity (a cup's inside, a tunnel's far end) is long, and a search that reaches the
   * hull stops there. */
 constexpr std::uint32_t OUTSIDE_REACH = 1u << 18;
+
+/** How many levels (SmallHandlePatches::level) on each side of a tunnel's middle cutSmallHandles()
+  * slices its tube at. A patch is centred at a vertex, on the surface at one end of a web, whose
+  * other end lies a ring further on: the slice that cuts it is at level 0 or 1 from there. */
+constexpr int WAIST_LEVELS = 2;
 
 /** The tetrahedra around one vertex (its star), or around one edge (its ring), and how they split
   * into connected parts on each side of the surface. */
@@ -125,7 +131,7 @@ public:
     if (stays_buried_.empty ())      // not a volume, whose solid is X's
     {
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-      const std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles);
+      const std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles, positions);
       if (!cut.empty ())
         surface.reset ();
       joined.insert (joined.end (), cut.begin (), cut.end ());
@@ -162,6 +168,9 @@ private:
   {
     double weight;
     std::vector<std::uint32_t> tetrahedra; // sorted
+    /** A slice of the solid across a tunnel's waist: it may cut a web across a gap, and so
+      * split the solid. */
+    bool web = false;
     bool operator<(const HandleCut& o) const
     {
       return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
@@ -177,8 +186,14 @@ private:
     * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
     * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void,
     * so it takes one handle away and makes none: there are at most as many moves as handles.
+    * A web, a slice of the solid across a tunnel's waist (handlePlugs()), may instead split the
+    * solid into parts each larger than the search's reach (a bridge between two objects, which
+    * also raises the Euler characteristic by 1), if the edges it leaves on no tetrahedron of the
+    * solid each join points a gap apart that the sampling resolves (seversResolvedGapsOnly()): a
+    * tube of the solid across a gap no points sample, where a thin wire the points sample stays.
     * Returns the tetrahedra moved. */
-  std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface)
+  std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface,
+                                              const std::vector<Point3>& positions)
   {
     const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices ());
     std::vector<std::uint32_t> moved;
@@ -191,8 +206,8 @@ private:
     for (std::size_t i = 0; i < patches.centres.size (); ++i)
     {
       tetrahedra_.gatherStar (patches.centres[i], s.star);
-      stars[patches.fill_only[i]].insert (stars[patches.fill_only[i]].end (), s.star.tetrahedra ().begin (),
-                                          s.star.tetrahedra ().end ());
+      stars[patches.tunnel[i]].insert (stars[patches.tunnel[i]].end (), s.star.tetrahedra ().begin (),
+                                       s.star.tetrahedra ().end ());
     }
     // Each vertex once: one in both kinds of star gives the parts of both sides.
     std::vector<std::uint32_t> around = tetrahedra_.verticesOf (stars[0]), of_tunnels_only;
@@ -232,9 +247,11 @@ private:
           continue; // moved in part
         if (euler_change (c.tetrahedra, s.euler) < 1)
           continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
-        const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s);
-        if (move.empty ())
-          continue; // its handle is cut, or the move would cut a side in two or leave a pinch
+        if (c.web && !seversResolvedGapsOnly (c.tetrahedra, positions, s.star))
+          continue; // it would cut what the points sample (and so would any larger move)
+        const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s, c.web);
+        if (move.empty () || (c.web && !seversResolvedGapsOnly (move, positions, s.star)))
+          continue; // its handle is cut, or the move would cut a side in two, leave a pinch or cut a wire
         for (std::uint32_t t : move)
         {
           labels_.inside[t] ^= 1u;
@@ -246,7 +263,7 @@ private:
     return moved;
   }
 
-  /** The lists of all threads in one, sorted. */
+  /** The lists of all threads in one, sorted, each candidate once (the patches overlap). */
   static std::vector<HandleCut> gathered (
       tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>>& found)
   {
@@ -254,6 +271,11 @@ private:
     for (auto& [scratch, list] : found)
       std::move (list.begin (), list.end (), std::back_inserter (all));
     std::sort (all.begin (), all.end ());
+    all.erase (std::unique (all.begin (), all.end (),
+                            [] (const HandleCut& a, const HandleCut& b) {
+                              return a.tetrahedra == b.tetrahedra && a.web == b.web;
+                            }),
+               all.end ());
     return all;
   }
 
@@ -262,7 +284,11 @@ private:
     * solid's Euler characteristic (by more than 1 where it encloses pockets, which closedMove()
     * adds). Where a patch goes round a tube too wide for one star to cut, the tube's own
     * tetrahedra within the patch make a slice of it: moved across, they cut the tube (a bridge of
-    * the solid) or fill it (a tunnel). Sorted, weakest first. */
+    * the solid) or fill it (a tunnel). And per tunnel, the webs: for each two consecutive levels
+    * of its patch (SmallHandlePatches::level) within WAIST_LEVELS of its middle, the connected
+    * parts of the solid's tetrahedra within the patch with a corner at or below the lower level
+    * and one at or above the higher, a slice across the tube that cuts it where it is solid.
+    * Sorted, weakest first. */
   std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches) const
   {
     const SolidEulerChange& euler_change = *euler_change_;
@@ -273,15 +299,43 @@ private:
           auto& [scratch, plugs] = found.local ();
           const auto first = patches.vertices.begin () + patches.begin[i],
                      last = patches.vertices.begin () + patches.begin[i + 1];
-          for (std::vector<std::uint32_t>& part :
-               partsOnOneSide (tetrahedraWithin (first, last, scratch.star), scratch.parts))
-          {
-            HandleCut plug{0.0, std::move (part)};
+          const std::vector<std::uint32_t> within = tetrahedraWithin (first, last, scratch.star);
+          const auto add = [&] (std::vector<std::uint32_t>& part, bool web) {
+            HandleCut plug{0.0, std::move (part), web};
             for (std::uint32_t t : plug.tetrahedra)
               plug.weight += labels_.margin[t];
-            if (!(patches.fill_only[i] && inside (plug.tetrahedra.front ())) &&
-                euler_change (plug.tetrahedra, scratch.euler) >= 1)
+            if (euler_change (plug.tetrahedra, scratch.euler) >= 1)
               plugs.push_back (std::move (plug));
+          };
+          for (std::vector<std::uint32_t>& part : partsOnOneSide (within, scratch.parts))
+            if (!(patches.tunnel[i] && inside (part.front ())))
+              add (part, false);
+          if (!patches.tunnel[i])
+            return;
+          // The solid's tetrahedra within the patch, each with the range of its corners' levels.
+          std::vector<std::pair<std::uint32_t, std::array<int, 2>>> solid;
+          for (std::uint32_t t : within)
+            if (inside (t))
+            {
+              std::array<int, 2> range{INT8_MAX, INT8_MIN};
+              for (int j = 0; j < 4; ++j)
+              {
+                const int level =
+                    patches
+                        .level[std::lower_bound (first, last, tetrahedra_.vertex (t, j)) - patches.vertices.begin ()];
+                range = {std::min (range[0], level), std::max (range[1], level)};
+              }
+              solid.push_back ({t, range});
+            }
+          // Near the tube's middle: the patch's centre is on the surface at one end of a web.
+          for (int cut = -WAIST_LEVELS; cut < WAIST_LEVELS; ++cut)
+          {
+            std::vector<std::uint32_t> waist; // across the tube, between levels cut and cut + 1
+            for (const auto& [t, range] : solid)
+              if (range[0] <= cut && cut < range[1])
+                waist.push_back (t);
+            for (std::vector<std::uint32_t>& part : partsOnOneSide (waist, scratch.parts))
+              add (part, true);
           }
         },
         4);
@@ -340,18 +394,64 @@ private:
     return parts;
   }
 
+  /** Does moving \a move (of the solid) out sever only points a gap apart that the sampling
+    * resolves? An edge of its tetrahedra that no other tetrahedron of the solid keeps must be
+    * longer than UNRESOLVED_GAP times the smaller spacing at its ends, or its ends must stay tied
+    * through a third point by edges the solid keeps. \a star is scratch. */
+  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, const std::vector<Point3>& positions,
+                               Star& star) const
+  {
+    const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
+    // Per vertex of the move: its spacing, and its neighbours along the edges the solid keeps.
+    const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (move);
+    std::vector<double> spacing (corners.size ());
+    std::vector<std::vector<std::uint32_t>> kept (corners.size ()); // sorted
+    for (std::size_t k = 0; k < corners.size (); ++k)
+    {
+      tetrahedra_.gatherStar (corners[k], star);
+      spacing[k] = spacingAt (tetrahedra_, star, corners[k], positions);
+      for (std::uint32_t t : star.tetrahedra ())
+        if (inside (t) && !moving (t))
+          for (int i = 0; i < 4; ++i)
+            kept[k].push_back (tetrahedra_.vertex (t, i));
+      std::sort (kept[k].begin (), kept[k].end ());
+      kept[k].erase (std::unique (kept[k].begin (), kept[k].end ()), kept[k].end ());
+    }
+    const auto at = [&] (std::uint32_t v) {
+      return static_cast<std::size_t> (std::lower_bound (corners.begin (), corners.end (), v) - corners.begin ());
+    };
+    std::vector<std::uint32_t> common;
+    for (std::uint32_t t : move)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
+          if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
+            continue; // kept
+          if (distance (positions[corners[a]], positions[corners[b]]) >
+              UNRESOLVED_GAP * std::min (spacing[a], spacing[b]))
+            continue; // a gap the sampling resolves
+          common.clear ();
+          std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
+                                 std::back_inserter (common));
+          if (common.empty ())
+            return false;
+        }
+    return true;
+  }
+
   /** The move that cuts a handle with \a part (sorted, all on one side): \a part, the pockets
     * it encloses (moveKeepingSidesConnected()), and the weaker parts of its side that it would leave
     * apart around a vertex of it (a pinch), grown so a few times; empty if the move changes the
-    * solid's Euler characteristic by other than +1, cuts its side in two, or leaves the surface
-    * other than a 2-manifold at its vertices. */
+    * solid's Euler characteristic by other than +1, cuts its side in two (but into large parts
+    * where \a may_split), or leaves the surface other than a 2-manifold at its vertices. */
   std::vector<std::uint32_t> closedMove (std::vector<std::uint32_t> part, std::vector<std::uint32_t>& reached,
-                                         std::uint32_t& search, StarScratch& s)
+                                         std::uint32_t& search, StarScratch& s, bool may_split)
   {
     const std::uint8_t side = inside (part.front ());
     for (int grown = 0; grown <= 2; ++grown)
     {
-      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search);
+      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search, may_split);
       if (move.empty () || (*euler_change_) (move, s.euler) != 1)
         return {};
       for (std::uint32_t t : move)
@@ -394,12 +494,14 @@ private:
   /** The tetrahedra to move for \a part (sorted, all on one side) if the tetrahedra across its
     * facets on its side stay connected without it, through at most HANDLE_REACH tetrahedra of that
     * side from each (and, for the outside, through the space beyond the hull, which a search
-    * goes on looking for up to OUTSIDE_REACH tetrahedra); empty if not. A
-    * move into the solid may enclose small pockets of the outside (a search from them ends within
-    * the reach, short of the hull): they move with it, as fillUnsampledVoids() would fill them.
-    * \a reached: per tetrahedron, the last \a search to reach it. */
+    * goes on looking for up to OUTSIDE_REACH tetrahedra), or, for the solid where \a may_split, if
+    * no search from them ends within HANDLE_REACH (what is left is connected or in large parts);
+    * empty if not. A move into the solid may enclose small pockets of the outside (a search from
+    * them ends within the reach, short of the hull): they move with it, as fillUnsampledVoids()
+    * would fill them. \a reached: per tetrahedron, the last \a search to reach it. */
   std::vector<std::uint32_t> moveKeepingSidesConnected (const std::vector<std::uint32_t>& part,
-                                                        std::vector<std::uint32_t>& reached, std::uint32_t search) const
+                                                        std::vector<std::uint32_t>& reached, std::uint32_t search,
+                                                        bool may_split) const
   {
     const bool side = inside (part.front ());
     const auto inPart = [&] (std::uint32_t t) { return std::binary_search (part.begin (), part.end (), t); };
@@ -417,7 +519,7 @@ private:
     // One search from each seed that no earlier search reached. What is left of the side is
     // connected when one search reached all of it (and the hull, if the part touched it), or
     // when every search reached the hull, beyond which the outside is one.
-    std::size_t searches = 0, to_hull = 0;
+    std::size_t searches = 0, to_hull = 0, ended = 0;
     std::vector<std::uint32_t> move = part, queue;
     for (std::uint32_t seed : seeds)
     {
@@ -446,12 +548,13 @@ private:
       {
         ++searches;
         to_hull += hull_reached;
+        ended += queue.size () <= HANDLE_REACH;
       }
     }
     const bool connected = searches == 0                  ? hull_seed
                            : !side && to_hull == searches ? true
                                                           : searches == 1 && (!hull_seed || to_hull == 1);
-    if (!connected)
+    if (!connected && !(side && may_split && ended == 0))
       return {};
     std::sort (move.begin (), move.end ());
     return move;

@@ -70,6 +70,7 @@ struct PatchScratch
   std::vector<std::uint32_t> in_patch, seen; // per vertex: the stamp of the last patch (search) to reach it
   std::uint32_t stamp = 0, search = 0;
   std::vector<std::uint32_t> vertices, front, next;
+  std::array<std::vector<std::uint8_t>, 2> rings; // per vertex: its rings from each end of a tunnel's tube
   std::vector<Edge> edges;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_of; // boundary vertex, its loop
   UnionFind loops;
@@ -80,7 +81,7 @@ enum class HandleKind
 {
   none,   ///< no small handle
   handle, ///< a small handle, to be cut or filled
-  tunnel  ///< a thin tube between two wider parts of the surface, to be filled only
+  tunnel  ///< a thin tube between two wider parts of the surface: a tunnel through a wall, or a web
 };
 
 /** The patches of a closed surface around its vertices, and what their topology says. */
@@ -93,8 +94,8 @@ public:
 
   /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube?
     * A tube whose ends the surface joins only far away is a tunnel when the surface opens out
-    * past both of them, as through a wall: a hollow tube is a hole the points do not resolve, and
-    * filling it is right, where a solid one (a thin wire over a wide hole) is a part they show. */
+    * past both of them: a hole through a wall that the points do not resolve, or a web across a
+    * gap between two walls (a solid tube, which may also be a thin wire the points do show). */
   HandleKind onSmallHandle (std::uint32_t v, PatchScratch& s) const
   {
     if (s.in_patch.empty ())
@@ -176,10 +177,15 @@ public:
       return HandleKind::none;
     if (loopsJoinNear (s, stamp, local))
       return HandleKind::handle;
-    int open = 0;
-    for (std::uint32_t i = 0; i < s.loop_of.size () && open < 2; ++i)
-      open += s.loop_of[i].second == i && opensOut (s, stamp, i);
-    return open >= 2 ? HandleKind::tunnel : HandleKind::none;
+    std::array<std::uint32_t, 2> open{};
+    int opening = 0;
+    for (std::uint32_t i = 0; i < s.loop_of.size () && opening < 2; ++i)
+      if (s.loop_of[i].second == i && opensOut (s, stamp, i))
+        open[opening++] = i;
+    if (opening < 2)
+      return HandleKind::none;
+    measureFromEnds (s, stamp, open);
+    return HandleKind::tunnel;
   }
 
   /** Keeps, of the vertices flagged in \a look, those of a maximal independent set, taken in
@@ -251,6 +257,34 @@ private:
     return joined;
   }
 
+  /** Counts, for each vertex of the patch, its rings within the patch from each of the boundary
+    * loops \a ends (s.rings). */
+  void measureFromEnds (PatchScratch& s, std::uint32_t stamp, const std::array<std::uint32_t, 2>& ends) const
+  {
+    for (int e = 0; e < 2; ++e)
+    {
+      if (s.rings[e].empty ())
+        s.rings[e].assign (n_, 0);
+      const std::uint32_t search = startAtLoop (s, ends[e]);
+      for (std::uint8_t ring = 0; !s.front.empty (); ++ring)
+      {
+        s.next.clear ();
+        for (std::uint32_t u : s.front)
+        {
+          s.rings[e][u] = ring;
+          forNeighbours (u, [&] (std::uint32_t w) {
+            if (s.in_patch[w] == stamp && s.seen[w] != search)
+            {
+              s.seen[w] = search;
+              s.next.push_back (w);
+            }
+          });
+        }
+        s.front.swap (s.next);
+      }
+    }
+  }
+
   /** Does the surface open out past the patch's boundary loop \a loop: does a search off the
     * patch from it reach, 2 HANDLE_RINGS rings on, more than twice as many vertices as the loop
     * has? Along a tube the front stays as long as the loop; on a wall it grows with every ring. */
@@ -320,8 +354,8 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   struct Found
   {
     std::uint32_t centre;
-    bool fill_only;
-    std::vector<std::uint32_t> patch; // sorted
+    bool tunnel;
+    std::vector<std::pair<std::uint32_t, std::int8_t>> patch; // sorted (vertex, level)
     bool operator<(const Found& o) const { return centre < o.centre; }
   };
   tbb::enumerable_thread_specific<std::pair<PatchScratch, std::vector<Found>>> found;
@@ -334,8 +368,10 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
         const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch);
         if (kind == HandleKind::none)
           return;
-        list.push_back ({static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, scratch.vertices});
-        std::sort (list.back ().patch.begin (), list.back ().patch.end ());
+        Found& f = list.emplace_back (Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, {}});
+        for (std::uint32_t w : scratch.vertices)
+          f.patch.emplace_back (w, f.tunnel ? std::int8_t (scratch.rings[0][w] - scratch.rings[1][w]) : 0);
+        std::sort (f.patch.begin (), f.patch.end ());
       },
       256);
   std::vector<Found> all;
@@ -346,8 +382,12 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   for (const Found& f : all)
   {
     out.centres.push_back (f.centre);
-    out.fill_only.push_back (f.fill_only);
-    out.vertices.insert (out.vertices.end (), f.patch.begin (), f.patch.end ());
+    out.tunnel.push_back (f.tunnel);
+    for (const auto& [w, level] : f.patch)
+    {
+      out.vertices.push_back (w);
+      out.level.push_back (level);
+    }
     out.begin.push_back (static_cast<std::uint32_t> (out.vertices.size ()));
   }
   return out;

@@ -13,11 +13,18 @@ namespace pcl_wrap::detail
 struct SmallHandlePatches
 {
   std::vector<std::uint32_t> centres; ///< ascending vertex ids
-  /** Per centre: its patch goes round a tunnel (a thin tube between two wider parts of the
-    * surface), which may be filled but not cut. */
-  std::vector<std::uint8_t> fill_only;
+  /** Per centre: its patch goes round a thin tube between two wider parts of the surface, past
+    * both of whose ends the surface opens out: a tunnel through a wall (the tube hollow), to be
+    * filled, or a web across a gap (the tube solid), to be cut where the gap is one the sampling
+    * resolves. */
+  std::vector<std::uint8_t> tunnel;
   /** The patch around centres[i]: the vertices vertices[begin[i] .. begin[i + 1]), ascending. */
   std::vector<std::uint32_t> begin, vertices;
+  /** Per vertex of a tunnel's patch, how much nearer it is to one end of the tube than to the
+    * other: its rings within the patch from one of the two boundary loops past which the surface
+    * opens out, less its rings from the other. A tube's cross-sections lie between two levels.
+    * 0 for the other patches' vertices. */
+  std::vector<std::int8_t> level;
 };
 
 /** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
