@@ -1,11 +1,13 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""usage: bench/noisy_shapes.py sphere|torus N K SEED OUT.xyz
+"""usage: bench/noisy_shapes.py SHAPE N K SEED OUT.xyz
 
-Writes N points on the unit sphere, or on the torus of radii 1 and 0.3, uniform by area, moved by
-isotropic Gaussian noise of K times the clean sample's median spacing (its nearest-neighbour
-distance), drawn from SEED. The surface has one component, and genus 0 or 1: the noise class of
-bench/corpus.py at any size. Prints the spacing and sigma.
+Writes N points uniform by area on SHAPE, moved by isotropic Gaussian noise of K times the clean
+sample's median spacing (its nearest-neighbour distance), drawn from SEED. SHAPE is sphere (the
+unit sphere), torus (radii 1 and 0.3), or one of the development meshes of Debian's libcgal-demo
+that bench/corpus.py resamples (knot1, anchor_dense, blobby, dino, fandisk, triceratops,
+bunny00). The surface has one component, and the genus of the shape: the noise and resampled
+classes of bench/corpus.py at any size. Prints the spacing, sigma and the shape's genus.
 """
 import os
 import sys
@@ -17,14 +19,24 @@ import corpus  # noqa: E402  (its shapes, drawn from corpus.rng)
 
 
 def main():
-    if len(sys.argv) != 6 or sys.argv[1] not in ("sphere", "torus"):
+    shapes = ("sphere", "torus") + corpus.DEVELOPMENT_MESHES
+    if len(sys.argv) != 6 or sys.argv[1] not in shapes:
         sys.exit(__doc__)
     shape, n, k, seed, out = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
     corpus.rng = np.random.default_rng(seed)
-    points = corpus.sphere(n) if shape == "sphere" else corpus.torus(n)
+    if shape == "sphere":
+        points, genus = corpus.sphere(n), 0
+    elif shape == "torus":
+        points, genus = corpus.torus(n), 1
+    else:
+        meshes = {name: (vertices, triangles) for name, vertices, triangles in corpus.development_meshes()}
+        if shape not in meshes:
+            sys.exit("noisy_shapes.py: %s needs libcgal-demo" % shape)
+        vertices, triangles = meshes[shape]
+        points, genus = corpus.on_mesh(vertices, triangles, n), corpus.genus_of(vertices, triangles)
     spacing = corpus.median_spacing(points)
     np.savetxt(out, corpus.noisy(points, k * spacing), fmt="%.9g")
-    print("spacing %.6g sigma %.6g" % (spacing, k * spacing))
+    print("spacing %.6g sigma %.6g genus %d" % (spacing, k * spacing, genus))
 
 
 if __name__ == "__main__":
