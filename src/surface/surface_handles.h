@@ -37,8 +37,8 @@ struct SmallHandlePatches
   * it is not, it holds a handle (its own genus is above zero), or it goes round a thin tube: a
   * handle's when the rest of the surface joins the patch's boundary loops near the patch (within
   * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off, a
-  * tunnel's when the surface opens out past both ends (a hole through a wall), a ring's when it
-  * does not (the tube closes far away).
+  * tunnel's when the surface opens out past both ends (a hole through a wall, a web across a
+  * gap), a ring's when it does not (the tube closes far away).
   * \param[in] triangles a closed surface's, vertex ids below \a num_vertices */
 SmallHandlePatches
 smallHandlePatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
