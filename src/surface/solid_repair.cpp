@@ -296,7 +296,9 @@ private:
     parallelForEach (
         patches.centres.size (),
         [&] (std::size_t i) {
-          auto& [scratch, plugs] = found.local ();
+          auto& found_here = found.local ();
+          StarScratch& scratch = found_here.first;
+          std::vector<HandleCut>& plugs = found_here.second; // not bindings: the lambda below uses them
           const auto first = patches.vertices.begin () + patches.begin[i],
                      last = patches.vertices.begin () + patches.begin[i + 1];
           const std::vector<std::uint32_t> within = tetrahedraWithin (first, last, scratch.star);
