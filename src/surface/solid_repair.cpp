@@ -250,7 +250,7 @@ private:
         if (c.web && !seversResolvedGapsOnly (c.tetrahedra, positions, s.star))
           continue; // it would cut what the points sample (and so would any larger move)
         const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s, c.web);
-        if (move.empty () || (c.web && !seversResolvedGapsOnly (move, positions, s.star)))
+        if (move.empty () || (c.web && move != c.tetrahedra && !seversResolvedGapsOnly (move, positions, s.star)))
           continue; // its handle is cut, or the move would cut a side in two, leave a pinch or cut a wire
         for (std::uint32_t t : move)
         {
