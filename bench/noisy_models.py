@@ -19,6 +19,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import corpus  # noqa: E402
+import noisy_shapes  # noqa: E402
 
 
 def main():
@@ -48,9 +49,8 @@ def main():
                 genus = corpus.genus_of(vertices, triangles)
                 cells = []
                 for k in noise:
-                    corpus.rng = np.random.default_rng(seed)  # as bench/noisy_shapes.py draws it
-                    points = corpus.on_mesh(vertices, triangles, n)
-                    np.savetxt(cloud, corpus.noisy(points, k * corpus.median_spacing(points)), fmt="%.9g")
+                    points, _ = noisy_shapes.draw(lambda: corpus.on_mesh(vertices, triangles, n), k, seed)
+                    np.savetxt(cloud, points, fmt="%.9g")
                     subprocess.run([os.path.join(build, "apps", "pcl_wrap"), cloud, mesh, "--quiet", "--stats-json",
                                     stats], check=True)
                     q = json.loads(subprocess.run([os.path.join(build, "bench", "mesh_quality"), mesh, cloud, "points",
@@ -60,6 +60,7 @@ def main():
                     cells.append("%sc%d g%s %.2f%% %.1fs" % ("**ok** " if right else "", q["components"], q["genus"],
                                                           100 * q["points_on_output"], seconds))
                 print("| %s | c1 g%d | %d | %s |" % (name, genus, n, " | ".join(cells)), flush=True)
+
 
 if __name__ == "__main__":
     main()

@@ -18,24 +18,32 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import corpus  # noqa: E402  (its shapes, drawn from corpus.rng)
 
 
+def draw(sample, k, seed):
+    """The points sample() draws from SEED's generator, moved by noise of k times their median
+    spacing, and that spacing."""
+    corpus.rng = np.random.default_rng(seed)
+    points = sample()
+    spacing = corpus.median_spacing(points)
+    return corpus.noisy(points, k * spacing), spacing
+
+
 def main():
     shapes = ("sphere", "torus") + corpus.DEVELOPMENT_MESHES
     if len(sys.argv) != 6 or sys.argv[1] not in shapes:
         sys.exit(__doc__)
     shape, n, k, seed, out = sys.argv[1], int(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
-    corpus.rng = np.random.default_rng(seed)
     if shape == "sphere":
-        points, genus = corpus.sphere(n), 0
+        sample, genus = (lambda: corpus.sphere(n)), 0
     elif shape == "torus":
-        points, genus = corpus.torus(n), 1
+        sample, genus = (lambda: corpus.torus(n)), 1
     else:
         meshes = {name: (vertices, triangles) for name, vertices, triangles in corpus.development_meshes()}
         if shape not in meshes:
             sys.exit("noisy_shapes.py: %s needs libcgal-demo" % shape)
         vertices, triangles = meshes[shape]
-        points, genus = corpus.on_mesh(vertices, triangles, n), corpus.genus_of(vertices, triangles)
-    spacing = corpus.median_spacing(points)
-    np.savetxt(out, corpus.noisy(points, k * spacing), fmt="%.9g")
+        sample, genus = (lambda: corpus.on_mesh(vertices, triangles, n)), corpus.genus_of(vertices, triangles)
+    points, spacing = draw(sample, k, seed)
+    np.savetxt(out, points, fmt="%.9g")
     print("spacing %.6g sigma %.6g genus %d" % (spacing, k * spacing, genus))
 
 
