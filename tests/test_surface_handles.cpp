@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <climits>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -148,6 +149,43 @@ TEST (SurfaceHandles, TunnelThroughAWallIsFound)
                                      plate.vertices.begin () + plate.begin[i + 1], plate.centres[i]));
   }
   EXPECT_TRUE (detail::smallHandlePatches (plateWithHole (size, thickness, 6), num_vertices).centres.empty ());
+}
+
+TEST (SurfaceHandles, TunnelLevelsRunFromOneFaceToTheOther)
+{
+  // Along the tunnel through the plate, a patch's vertices on the plate's top face are nearer one
+  // of its ends than the other, those on the bottom face the other way round: the levels of one
+  // face are at most zero and those of the other at least zero (a vertex at a mouth of a tunnel
+  // as long as the patch is wide may be as near both), and neither face is all zero.
+  const int size = 30, thickness = 3;
+  const auto num_vertices = static_cast<std::uint32_t> ((size + 1) * (size + 1) * (thickness + 1));
+  const detail::SmallHandlePatches plate =
+      detail::smallHandlePatches (plateWithHole (size, thickness, 1), num_vertices);
+  ASSERT_EQ (plate.level.size (), plate.vertices.size ());
+  int across = 0; // patches that reach both faces
+  for (std::size_t i = 0; i < plate.centres.size (); ++i)
+  {
+    ASSERT_TRUE (plate.tunnel[i]);
+    std::array<int, 2> lowest{INT8_MAX, INT8_MAX}, highest{INT8_MIN, INT8_MIN}; // bottom face, top face
+    for (std::uint32_t k = plate.begin[i]; k < plate.begin[i + 1]; ++k)
+    {
+      const std::uint32_t z = plate.vertices[k] / ((size + 1) * (size + 1));
+      if (z != 0 && z != thickness)
+        continue;
+      const int face = z == thickness;
+      lowest[face] = std::min<int> (lowest[face], plate.level[k]);
+      highest[face] = std::max<int> (highest[face], plate.level[k]);
+    }
+    if (lowest[0] == INT8_MAX || lowest[1] == INT8_MAX)
+      continue;
+    ++across;
+    const auto below = [&] (int face) { return highest[face] <= 0 && lowest[face] < 0; };
+    const auto above = [&] (int face) { return lowest[face] >= 0 && highest[face] > 0; };
+    EXPECT_TRUE ((below (0) && above (1)) || (below (1) && above (0)))
+        << "centre " << plate.centres[i] << ": bottom " << lowest[0] << ".." << highest[0] << ", top " << lowest[1]
+        << ".." << highest[1];
+  }
+  EXPECT_GT (across, 0);
 }
 
 } // namespace

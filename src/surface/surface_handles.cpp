@@ -70,7 +70,7 @@ struct PatchScratch
   std::vector<std::uint32_t> in_patch, seen; // per vertex: the stamp of the last patch (search) to reach it
   std::uint32_t stamp = 0, search = 0;
   std::vector<std::uint32_t> vertices, front, next;
-  std::array<std::vector<std::uint8_t>, 2> rings; // per vertex: its rings from each end of a tunnel's tube
+  std::vector<std::int16_t> level; // per vertex of a tunnel's patch: SmallHandlePatches::level
   std::vector<Edge> edges;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_of; // boundary vertex, its loop
   UnionFind loops;
@@ -257,21 +257,22 @@ private:
     return joined;
   }
 
-  /** Counts, for each vertex of the patch, its rings within the patch from each of the boundary
-    * loops \a ends (s.rings). */
+  /** Sets, for each vertex of the patch, its rings within the patch from the boundary loop
+    * ends[0] less its rings from ends[1] (s.level): the first search writes its rings, the
+    * second takes its own away. */
   void measureFromEnds (PatchScratch& s, std::uint32_t stamp, const std::array<std::uint32_t, 2>& ends) const
   {
+    if (s.level.empty ())
+      s.level.assign (n_, 0);
     for (int e = 0; e < 2; ++e)
     {
-      if (s.rings[e].empty ())
-        s.rings[e].assign (n_, 0);
       const std::uint32_t search = startAtLoop (s, ends[e]);
-      for (std::uint8_t ring = 0; !s.front.empty (); ++ring)
+      for (std::int16_t ring = 0; !s.front.empty (); ++ring)
       {
         s.next.clear ();
         for (std::uint32_t u : s.front)
         {
-          s.rings[e][u] = ring;
+          s.level[u] = e == 0 ? ring : std::int16_t (s.level[u] - ring);
           forNeighbours (u, [&] (std::uint32_t w) {
             if (s.in_patch[w] == stamp && s.seen[w] != search)
             {
@@ -370,7 +371,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
           return;
         Found& f = list.emplace_back (Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, {}});
         for (std::uint32_t w : scratch.vertices)
-          f.patch.emplace_back (w, f.tunnel ? std::int8_t (scratch.rings[0][w] - scratch.rings[1][w]) : 0);
+          f.patch.emplace_back (w, f.tunnel ? std::int8_t (scratch.level[w]) : 0);
         std::sort (f.patch.begin (), f.patch.end ());
       },
       256);
