@@ -3,11 +3,12 @@
 //
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
 // vertex against the surface's links found by brute force, the join of parts cut off the
-// solid through X, the points left floating in a cut, brought back, and webs across a gap cut
-// where bars the points sample stay.
+// solid through X, the points left floating in a cut, brought back, webs across a gap cut
+// where bars the points sample stay, and the spacing of the sample around a lone point.
 #include "wrap/boundary.h"
 #include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
+#include "surface/solid_join.h"
 #include "surface/solid_labelling.h"
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_repair.h"
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <random>
@@ -314,6 +316,42 @@ TEST (SolidRepair, CutsWebsAcrossAGapButKeepsBarsThePointsSample)
     EXPECT_EQ (surface.euler, c.euler);
     EXPECT_EQ (surface.vertices, points);
   }
+}
+
+TEST (SolidRepair, SpacingAroundALonePointIsTheSamples)
+{
+  // A jittered lattice of unit spacing with a hole, the points within 1.6 of its middle taken out,
+  // and one point put back at the middle: its nearest neighbour is about sqrt 3 away, but the
+  // sample around it is as dense as the rest.
+  std::mt19937 random (11);
+  std::uniform_real_distribution<double> jitter (-0.05, 0.05);
+  std::vector<Point3> points;
+  const Point3 middle{3.01, 2.98, 3.02};
+  for (int x = 0; x < 7; ++x)
+    for (int y = 0; y < 7; ++y)
+      for (int z = 0; z < 7; ++z)
+        if (std::hypot (x - 3, y - 3, z - 3) > 1.6)
+          points.push_back ({x + jitter (random), y + jitter (random), z + jitter (random)});
+  points.push_back (middle);
+  const Pipeline p (points);
+  std::vector<double> known (p.points.size (), std::numeric_limits<double>::quiet_NaN ());
+  detail::Star star, scratch;
+  const auto lone =
+      static_cast<std::uint32_t> (std::find (p.points.begin (), p.points.end (), middle) - p.points.begin ());
+  ASSERT_LT (lone, p.points.size ());
+  p.tetrahedra.gatherStar (lone, star);
+  const double own = detail::spacingAt (p.tetrahedra, star, lone, p.points);
+  EXPECT_GT (own, 1.6);
+  EXPECT_LT (detail::spacingAround (p.tetrahedra, star, lone, p.points, known, scratch), 1.15);
+  EXPECT_EQ (known[lone], own); // kept for the next call
+  // Away from the hole, the two agree.
+  const auto corner = static_cast<std::uint32_t> (
+      std::min_element (p.points.begin (), p.points.end (),
+                        [] (const Point3& a, const Point3& b) { return a[0] + a[1] + a[2] < b[0] + b[1] + b[2]; }) -
+      p.points.begin ());
+  p.tetrahedra.gatherStar (corner, star);
+  EXPECT_NEAR (detail::spacingAround (p.tetrahedra, star, corner, p.points, known, scratch),
+               detail::spacingAt (p.tetrahedra, star, corner, p.points), 0.15);
 }
 
 } // namespace

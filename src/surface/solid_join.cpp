@@ -210,6 +210,30 @@ spacingAt (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, cons
   return spacing;
 }
 
+double
+spacingAround (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions,
+               std::vector<double>& known, Star& scratch)
+{
+  std::vector<double> spacings;
+  for (std::uint32_t w : tetrahedra.verticesOf (star.tetrahedra ())) // v among them
+  {
+    if (std::isnan (known[w]))
+    {
+      const Star* around = &star;
+      if (w != v)
+      {
+        tetrahedra.gatherStar (w, scratch);
+        around = &scratch;
+      }
+      known[w] = spacingAt (tetrahedra, *around, w, positions);
+    }
+    spacings.push_back (known[w]);
+  }
+  const auto middle = spacings.begin () + spacings.size () / 2;
+  std::nth_element (spacings.begin (), middle, spacings.end ());
+  return *middle;
+}
+
 SolidJoin
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                    const SolidParts& parts, SolidLabels& labels, std::vector<std::uint8_t>& moved_flags)

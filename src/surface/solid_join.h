@@ -31,6 +31,15 @@ constexpr double UNRESOLVED_GAP = 1.5;
 double
 spacingAt (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions);
 
+/** \brief The spacing of the sample around vertex \a v, whose star \a star holds: the median of
+  * spacingAt() over v and its neighbours in Del S. A random sample leaves some points far from
+  * all others; at such a point, spacingAt() says more of the point than of the sampling there.
+  * \param[in,out] known spacingAt() per vertex, NaN where not yet computed
+  * \param scratch a star, for the neighbours' */
+double
+spacingAround (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions,
+               std::vector<double>& known, Star& scratch);
+
 /** \brief What joinPartsThroughX() did. */
 struct SolidJoin
 {

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 #include <limits>
 #include <optional>
@@ -398,20 +399,20 @@ private:
 
   /** Does moving \a move (of the solid) out sever only points a gap apart that the sampling
     * resolves? An edge of its tetrahedra that no other tetrahedron of the solid keeps must be
-    * longer than UNRESOLVED_GAP times the smaller spacing at its ends, or its ends must stay tied
-    * through a third point by edges the solid keeps. \a star is scratch. */
-  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, const std::vector<Point3>& positions,
-                               Star& star) const
+    * longer than UNRESOLVED_GAP times the smaller of the sample's spacings around its ends
+    * (spacingAround()), or its ends must stay tied through a third point by edges the solid
+    * keeps. \a star is scratch. */
+  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, const std::vector<Point3>& positions, Star& star)
   {
+    if (spacing_at_.empty ())
+      spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
     const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
-    // Per vertex of the move: its spacing, and its neighbours along the edges the solid keeps.
+    // Per vertex of the move: its neighbours along the edges the solid keeps.
     const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (move);
-    std::vector<double> spacing (corners.size ());
     std::vector<std::vector<std::uint32_t>> kept (corners.size ()); // sorted
     for (std::size_t k = 0; k < corners.size (); ++k)
     {
       tetrahedra_.gatherStar (corners[k], star);
-      spacing[k] = spacingAt (tetrahedra_, star, corners[k], positions);
       for (std::uint32_t t : star.tetrahedra ())
         if (inside (t) && !moving (t))
           for (int i = 0; i < 4; ++i)
@@ -422,6 +423,16 @@ private:
     const auto at = [&] (std::uint32_t v) {
       return static_cast<std::size_t> (std::lower_bound (corners.begin (), corners.end (), v) - corners.begin ());
     };
+    // Per vertex of the move: the sample's spacing around it, where an edge needs it.
+    std::vector<double> spacing (corners.size (), std::numeric_limits<double>::quiet_NaN ());
+    const auto spacingOf = [&] (std::size_t k) {
+      if (std::isnan (spacing[k]))
+      {
+        tetrahedra_.gatherStar (corners[k], star);
+        spacing[k] = spacingAround (tetrahedra_, star, corners[k], positions, spacing_at_, neighbour_star_);
+      }
+      return spacing[k];
+    };
     std::vector<std::uint32_t> common;
     for (std::uint32_t t : move)
       for (int i = 0; i < 4; ++i)
@@ -431,7 +442,7 @@ private:
           if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
             continue; // kept
           if (distance (positions[corners[a]], positions[corners[b]]) >
-              UNRESOLVED_GAP * std::min (spacing[a], spacing[b]))
+              UNRESOLVED_GAP * std::min (spacingOf (a), spacingOf (b)))
             continue; // a gap the sampling resolves
           common.clear ();
           std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
@@ -953,6 +964,8 @@ private:
   std::vector<std::uint8_t> stays_buried_; // per vertex, with keep_buried; else empty
   std::vector<std::uint8_t> flipped_;
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
+  std::vector<double> spacing_at_;     // per vertex: spacingAt(), NaN until a gap check needs it
+  Star neighbour_star_;                // spacingAround()'s scratch
   std::optional<SolidEulerChange> euler_change_; // from the first mending on
 };
 
