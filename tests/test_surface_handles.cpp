@@ -3,7 +3,8 @@
 //
 // Where the surface stage looks for small handles to cut (docs/surface.md §2): on tori made of
 // quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
-// plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not.
+// plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not; asked to look
+// near some vertices only, it looks nowhere else.
 #include "surface/surface_handles.h"
 
 #include <gtest/gtest.h>
@@ -126,6 +127,21 @@ TEST (SurfaceHandles, OnlyThePartWithTheSmallHandle)
   triangles.clear ();
   addOctahedron (0, triangles);
   EXPECT_TRUE (detail::smallHandlePatches (triangles, 6).centres.empty ());
+}
+
+TEST (SurfaceHandles, OnlyNearTheGivenVertices)
+{
+  // Two small tori, ids 0..47 and 100..147: near a vertex of the second, only its centres; near
+  // vertices of neither (unused ids), none.
+  std::vector<Triangle> triangles;
+  addTorus (8, 6, 0, triangles);
+  addTorus (8, 6, 100, triangles);
+  const std::vector<std::uint32_t> second{120}, neither{60, 70};
+  const std::vector<std::uint32_t> found = detail::smallHandlePatches (triangles, 148, &second).centres;
+  ASSERT_FALSE (found.empty ());
+  EXPECT_GE (found.front (), 100u);
+  EXPECT_FALSE (detail::smallHandlePatches (triangles, 148).centres.front () >= 100u); // both, unrestricted
+  EXPECT_TRUE (detail::smallHandlePatches (triangles, 148, &neither).centres.empty ());
 }
 
 TEST (SurfaceHandles, TunnelThroughAWallIsFound)

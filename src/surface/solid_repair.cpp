@@ -53,6 +53,10 @@ constexpr std::uint32_t HANDLE_REACH = 4096;
   * hull stops there. */
 constexpr std::uint32_t OUTSIDE_REACH = 1u << 18;
 
+/** How many times run() looks for small handles, at most: again after each search that cut
+  * something, only around the tetrahedra it moved. */
+constexpr int HANDLE_PASSES = 4;
+
 /** How many levels (SmallHandlePatches::level) on each side of a tunnel's middle cutSmallHandles()
   * slices its tube at. A patch is centred at a vertex, on the surface at one end of a web, whose
   * other end lies a ring further on: the slice that cuts it is at level 0 or 1 from there. */
@@ -132,10 +136,22 @@ public:
     if (stays_buried_.empty ())      // not a volume, whose solid is X's
     {
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-      const std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles, positions);
-      if (!cut.empty ())
+      std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles, positions, nullptr);
+      for (int pass = 1; !cut.empty (); ++pass)
+      {
         surface.reset ();
-      joined.insert (joined.end (), cut.begin (), cut.end ());
+        joined.insert (joined.end (), cut.begin (), cut.end ());
+        if (pass == HANDLE_PASSES)
+          break;
+        // A cut changes the surface around it, and what it leaves (a handle that no candidate of
+        // the surface before took away, one the mending ties) is looked for again there.
+        done.flipped += joined.size ();
+        mend (tetrahedra_.verticesOf (joined), done);
+        joined.clear ();
+        const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
+        surface = extractSolidBoundary (tetrahedra_, labels_.inside);
+        cut = cutSmallHandles (surface->triangles, positions, &near);
+      }
     }
     done.flipped += joined.size ();
     const std::size_t flipped_before = done.flipped;
@@ -192,11 +208,13 @@ private:
     * also raises the Euler characteristic by 1), if the edges it leaves on no tetrahedron of the
     * solid each join points a gap apart that the sampling resolves (seversResolvedGapsOnly()): a
     * tube of the solid across a gap no points sample, where a thin wire the points sample stays.
-    * Returns the tetrahedra moved. */
+    * With \a near, only the handles near its vertices (smallHandlePatches()). Returns the
+    * tetrahedra moved. */
   std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface,
-                                              const std::vector<Point3>& positions)
+                                              const std::vector<Point3>& positions,
+                                              const std::vector<std::uint32_t>* near)
   {
-    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices ());
+    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices (), near);
     std::vector<std::uint32_t> moved;
     if (patches.centres.empty ())
       return moved;

@@ -188,6 +188,34 @@ public:
     return HandleKind::tunnel;
   }
 
+  /** Clears the flags in \a look of the vertices more than \a rings rings from all of \a seeds. */
+  void keepNear (const std::vector<std::uint32_t>& seeds, int rings, std::vector<std::uint8_t>& look) const
+  {
+    std::vector<std::uint8_t> near (n_, 0);
+    std::vector<std::uint32_t> front, next;
+    for (std::uint32_t v : seeds)
+      if (!near[v])
+      {
+        near[v] = 1;
+        front.push_back (v);
+      }
+    for (int ring = 0; ring < rings && !front.empty (); ++ring)
+    {
+      next.clear ();
+      for (std::uint32_t u : front)
+        forNeighbours (u, [&] (std::uint32_t w) {
+          if (!near[w])
+          {
+            near[w] = 1;
+            next.push_back (w);
+          }
+        });
+      front.swap (next);
+    }
+    for (std::uint32_t v = 0; v < n_; ++v)
+      look[v] = look[v] && near[v];
+  }
+
   /** Keeps, of the vertices flagged in \a look, those of a maximal independent set, taken in
     * the order of the ids: every flagged vertex is kept or next to one that is. */
   void keepCentres (std::vector<std::uint8_t>& look) const
@@ -318,7 +346,8 @@ private:
 } // namespace
 
 SmallHandlePatches
-smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices)
+smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
+                    const std::vector<std::uint32_t>* near)
 {
   // The genus of each connected part, from V - E + F with E = 3F / 2.
   UnionFind parts (num_vertices);
@@ -351,6 +380,8 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   if (!any)
     return out;
   const HandleFinder finder (triangles, num_vertices);
+  if (near)
+    finder.keepNear (*near, 2 * HANDLE_RINGS, look);
   finder.keepCentres (look);
   struct Found
   {

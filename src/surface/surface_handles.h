@@ -39,9 +39,11 @@ struct SmallHandlePatches
   * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off, a
   * tunnel's when the surface opens out past both ends (a hole through a wall, a web across a
   * gap), a ring's when it does not (the tube closes far away).
-  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices */
+  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
+  * \param[in] near if given, only centres within 2 HANDLE_RINGS rings of one of these vertices */
 SmallHandlePatches
-smallHandlePatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices);
+smallHandlePatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices,
+                    const std::vector<std::uint32_t>* near = nullptr);
 
 /** \brief How many rings of triangles around a vertex smallHandlePatches() looks at. */
 constexpr int HANDLE_RINGS = 3;

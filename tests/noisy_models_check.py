@@ -1,0 +1,59 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""usage: tests/noisy_models_check.py BUILD_DIR
+
+The default surface on development meshes resampled with noise of up to a spacing, drawn as
+bench/noisy_models.py draws them (seed 1): cases where the noise leaves the labelling many small
+handles close together, so that cutting some changes the surface around them and the handles
+left are found only by looking there again (docs/surface.md, "Cutting small handles"). Each must
+come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
+points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
+"""
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "bench"))
+import corpus  # noqa: E402
+import corpus_table  # noqa: E402
+import noisy_shapes  # noqa: E402
+
+CASES = [  # mesh, points, noise in median spacings
+    ("bunny00", 10000, 1.0),
+    ("dino", 100000, 1.0),
+    ("anchor_dense", 10000, 1.0),
+]
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    build = os.path.abspath(sys.argv[1])
+    meshes = {name: (vertices, triangles) for name, vertices, triangles in corpus.development_meshes()}
+    if not meshes:
+        sys.exit("no development meshes: is libcgal-demo installed (scripts/setup.sh)?")
+    wrong = []
+    with tempfile.TemporaryDirectory() as work:
+        cloud = os.path.join(work, "cloud.xyz")
+        for name, n, k in CASES:
+            vertices, triangles = meshes[name]
+            points, _ = noisy_shapes.draw(lambda: corpus.on_mesh(vertices, triangles, n), k, 1)
+            np.savetxt(cloud, points, fmt="%.9g")
+            case = {"components": 1, "genus": corpus.genus_of(vertices, triangles)}
+            q = corpus_table.run(build, "pcl_wrap", cloud, work)
+            ok = corpus_table.right(q, case, "pcl_wrap")
+            got = "failed" if q is None else "c%s g%s %.2f%% of the points" % (
+                q.get("components"), q.get("genus"), 100 * q.get("points_on_output", 0))
+            print("%-14s %7d noise %.2f  expected c1 g%d, got %s%s" % (name, n, k, case["genus"], got,
+                                                                    "" if ok else "  WRONG"))
+            if not ok:
+                wrong.append("%s %d %g" % (name, n, k))
+    if wrong:
+        sys.exit("wrong: " + ", ".join(wrong))
+
+
+if __name__ == "__main__":
+    main()
