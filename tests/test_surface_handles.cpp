@@ -3,8 +3,9 @@
 //
 // Where the surface stage looks for small handles to cut (docs/surface.md §2): on tori made of
 // quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
-// plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not; asked to look
-// near some vertices only, it looks nowhere else.
+// plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not; a surface
+// touching itself at a vertex has no handle there; asked to look near some vertices only, it
+// looks nowhere else.
 #include "surface/surface_handles.h"
 
 #include <gtest/gtest.h>
@@ -127,6 +128,37 @@ TEST (SurfaceHandles, OnlyThePartWithTheSmallHandle)
   triangles.clear ();
   addOctahedron (0, triangles);
   EXPECT_TRUE (detail::smallHandlePatches (triangles, 6).centres.empty ());
+}
+
+/** A tube of \a around x \a along vertices capped at both ends by one vertex, \a apex, with
+  * ids from \a first on: a sphere whose two poles touch, genus 0 once split there. */
+std::vector<Triangle>
+sphereTouchingItself (std::uint32_t around, std::uint32_t along, std::uint32_t apex)
+{
+  std::vector<Triangle> triangles;
+  const auto id = [&] (std::uint32_t i, std::uint32_t j) { return (i % around) * along + j; };
+  for (std::uint32_t i = 0; i < around; ++i)
+  {
+    for (std::uint32_t j = 0; j + 1 < along; ++j)
+    {
+      triangles.push_back ({id (i, j), id (i + 1, j), id (i + 1, j + 1)});
+      triangles.push_back ({id (i, j), id (i + 1, j + 1), id (i, j + 1)});
+    }
+    triangles.push_back ({apex, id (i + 1, 0), id (i, 0)});
+    triangles.push_back ({apex, id (i, along - 1), id (i + 1, along - 1)});
+  }
+  return triangles;
+}
+
+TEST (SurfaceHandles, APinchIsNoHandle)
+{
+  // V - F / 2 is 1, as for a torus, but the apex is two fans: no handle to look for. (Taken for a
+  // torus, the surface has patches round its tube whose ends join near the apex.) The same tube
+  // closed into a torus is a small handle.
+  EXPECT_TRUE (detail::smallHandlePatches (sphereTouchingItself (6, 8, 48), 49).centres.empty ());
+  std::vector<Triangle> torus;
+  addTorus (8, 6, 0, torus);
+  EXPECT_FALSE (detail::smallHandlePatches (torus, 48).centres.empty ());
 }
 
 TEST (SurfaceHandles, OnlyNearTheGivenVertices)

@@ -188,6 +188,41 @@ public:
     return HandleKind::tunnel;
   }
 
+  /** How many fans of triangles meet at \a v: the connected parts of its link, one where the
+    * surface is a 2-manifold, more where it touches itself there (a pinch). */
+  std::uint32_t fansAround (std::uint32_t v) const
+  {
+    std::array<std::uint32_t, 64> vertex{}, parent{};
+    std::uint32_t n = 0;
+    const auto index = [&] (std::uint32_t w) {
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (vertex[i] == w)
+          return i;
+      vertex[n] = w;
+      parent[n] = n;
+      return n++;
+    };
+    const auto root = [&] (std::uint32_t i) {
+      while (parent[i] != i)
+        i = parent[i];
+      return i;
+    };
+    if (around_.begin[v + 1] - around_.begin[v] > 32)
+      return 1; // not looked into: taken for a 2-manifold there, as every vertex was before
+    for (std::uint32_t k = around_.begin[v]; k < around_.begin[v + 1]; ++k)
+    {
+      const Triangle& t = triangles_[around_.triangle[k]];
+      const int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+      const std::uint32_t a = root (index (t[(at + 1) % 3])), b = root (index (t[(at + 2) % 3]));
+      if (a != b)
+        parent[a] = b;
+    }
+    std::uint32_t fans = 0;
+    for (std::uint32_t i = 0; i < n; ++i)
+      fans += parent[i] == i;
+    return fans;
+  }
+
   /** Clears the flags in \a look of the vertices more than \a rings rings from all of \a seeds. */
   void keepNear (const std::vector<std::uint32_t>& seeds, int rings, std::vector<std::uint8_t>& look) const
   {
@@ -380,6 +415,27 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   if (!any)
     return out;
   const HandleFinder finder (triangles, num_vertices);
+  {
+    // Where the surface touches itself at a vertex (a pinch the mending left, split after the
+    // repair), the part has one vertex fewer than a surface of its genus, and would look as if it
+    // had a handle more: each vertex counts once per fan of triangles there.
+    std::vector<std::uint32_t> fans (num_vertices, 1);
+    parallelForEach (num_vertices, [&] (std::size_t v) {
+      if (look[v])
+        fans[v] = finder.fansAround (static_cast<std::uint32_t> (v));
+    });
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+      vertices[parts.find (v)] += fans[v] - 1;
+    any = false;
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+    {
+      const std::uint32_t p = parts.find (v);
+      look[v] = look[v] && vertices[p] - faces[p] / 2 < 2;
+      any = any || look[v];
+    }
+    if (!any)
+      return out;
+  }
   if (near)
     finder.keepNear (*near, 2 * HANDLE_RINGS, look);
   finder.keepCentres (look);

@@ -31,7 +31,8 @@ struct SmallHandlePatches
   * a few rings of triangles around the vertex go round.
   *
   * Only the connected parts of the surface whose genus (from the Euler characteristic, V - F / 2
-  * for a closed surface) is above zero are looked at, around the centres of a maximal independent
+  * for a closed surface, a vertex where the surface touches itself counted once per fan of
+  * triangles there) is above zero are looked at, around the centres of a maximal independent
   * set of their vertices (each vertex is one or next to one). Around a centre, the triangles
   * within HANDLE_RINGS rings make a patch; it is a disc where the surface has no small handle. Where
   * it is not, it holds a handle (its own genus is above zero), or it goes round a thin tube: a
