@@ -208,7 +208,7 @@ public:
       return i;
     };
     if (around_.begin[v + 1] - around_.begin[v] > 32)
-      return 1; // not looked into: taken for a 2-manifold there, as every vertex was before
+      return 1; // not looked into: taken for a 2-manifold vertex, one fan
     for (std::uint32_t k = around_.begin[v]; k < around_.begin[v + 1]; ++k)
     {
       const Triangle& t = triangles_[around_.triangle[k]];
