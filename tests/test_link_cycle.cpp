@@ -120,5 +120,73 @@ TEST (LinkCycle, AgreesWithAGraphSearchOnRandomEdgeSets)
   EXPECT_GT (cycles, 3000u);
 }
 
+detail::LinkShape
+shapeOf (const std::vector<Edge>& edges)
+{
+  return detail::linkShape (edges.size (), [&] (std::size_t e) { return std::make_pair (edges[e][0], edges[e][1]); });
+}
+
+/** The connected parts of the graph of \a edges, by a depth-first search. */
+std::uint32_t
+partsBySearch (const std::vector<Edge>& edges)
+{
+  std::vector<std::uint8_t> seen (edges.size (), 0);
+  std::uint32_t parts = 0;
+  for (std::size_t start = 0; start < edges.size (); ++start)
+  {
+    if (seen[start])
+      continue;
+    ++parts;
+    std::vector<std::size_t> stack{start};
+    seen[start] = 1;
+    while (!stack.empty ())
+    {
+      const Edge e = edges[stack.back ()];
+      stack.pop_back ();
+      for (std::size_t f = 0; f < edges.size (); ++f)
+        if (!seen[f] && (edges[f][0] == e[0] || edges[f][0] == e[1] || edges[f][1] == e[0] || edges[f][1] == e[1]))
+        {
+          seen[f] = 1;
+          stack.push_back (f);
+        }
+    }
+  }
+  return parts;
+}
+
+TEST (LinkCycle, PartsAreTheGraphsConnectedParts)
+{
+  // A few cycles and paths on shared and separate vertices, short and long (past the stack).
+  std::mt19937 random (4);
+  const auto below = [&] (std::uint32_t k) { return static_cast<std::uint32_t> (random () % k); };
+  std::size_t several = 0;
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    std::vector<Edge> edges;
+    const std::uint32_t pieces = 1 + below (4);
+    for (std::uint32_t p = 0; p < pieces; ++p)
+    {
+      auto piece = cycle (3 + below (trial % 10 == 0 ? 40 : 6), below (2) ? 0 : 100 * (p + 1), 1, random);
+      if (below (3) == 0)
+        piece.pop_back (); // a path
+      edges.insert (edges.end (), piece.begin (), piece.end ());
+    }
+    std::shuffle (edges.begin (), edges.end (), random);
+    const detail::LinkShape shape = shapeOf (edges);
+    const std::uint32_t expected = partsBySearch (edges);
+    ASSERT_EQ (shape.parts, expected) << "trial " << trial;
+    several += expected > 1;
+  }
+  EXPECT_GT (several, 500u);
+  // Two fans at a pinch are two cycles; a third triangle on an edge makes two cycles share an end.
+  std::vector<Edge> two = cycle (5, 0, 1, random), other = cycle (4, 10, 1, random);
+  two.insert (two.end (), other.begin (), other.end ());
+  EXPECT_EQ (shapeOf (two).parts, 2u);
+  EXPECT_TRUE (shapeOf (two).cycles);
+  const std::vector<Edge> eight{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {3, 4}, {4, 0}};
+  EXPECT_EQ (shapeOf (eight).parts, 1u);
+  EXPECT_FALSE (shapeOf (eight).cycles);
+}
+
 } // namespace
 } // namespace pcl_wrap::test

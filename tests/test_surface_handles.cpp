@@ -130,13 +130,13 @@ TEST (SurfaceHandles, OnlyThePartWithTheSmallHandle)
   EXPECT_TRUE (detail::smallHandlePatches (triangles, 6).centres.empty ());
 }
 
-/** A tube of \a around x \a along vertices capped at both ends by one vertex, \a apex, with
-  * ids from \a first on: a sphere whose two poles touch, genus 0 once split there. */
+/** A tube of \a around x \a along vertices with ids from \a first on, capped at both ends by one
+  * vertex, \a apex: a sphere whose two poles touch, genus 0 once split there. */
 std::vector<Triangle>
-sphereTouchingItself (std::uint32_t around, std::uint32_t along, std::uint32_t apex)
+sphereTouchingItself (std::uint32_t around, std::uint32_t along, std::uint32_t apex, std::uint32_t first = 0)
 {
   std::vector<Triangle> triangles;
-  const auto id = [&] (std::uint32_t i, std::uint32_t j) { return (i % around) * along + j; };
+  const auto id = [&] (std::uint32_t i, std::uint32_t j) { return first + (i % around) * along + j; };
   for (std::uint32_t i = 0; i < around; ++i)
   {
     for (std::uint32_t j = 0; j + 1 < along; ++j)
@@ -159,6 +159,15 @@ TEST (SurfaceHandles, APinchIsNoHandle)
   std::vector<Triangle> torus;
   addTorus (8, 6, 0, torus);
   EXPECT_FALSE (detail::smallHandlePatches (torus, 48).centres.empty ());
+  // However many triangles meet there: three such spheres touching at one apex, 36 triangles in
+  // six fans.
+  std::vector<Triangle> three;
+  for (std::uint32_t k = 0; k < 3; ++k)
+  {
+    const std::vector<Triangle> sphere = sphereTouchingItself (6, 8, 144, 48 * k);
+    three.insert (three.end (), sphere.begin (), sphere.end ());
+  }
+  EXPECT_TRUE (detail::smallHandlePatches (three, 145).centres.empty ());
 }
 
 TEST (SurfaceHandles, OnlyNearTheGivenVertices)

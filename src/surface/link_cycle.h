@@ -12,9 +12,68 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief What the edges of a vertex's link make: the edges opposite the vertex in its triangles. */
+struct LinkShape
+{
+  std::uint32_t parts = 0; ///< connected parts, edges joined where they share an end
+  bool cycles = true;      ///< every end on exactly two edges: each part is a cycle
+};
+
+/** \brief The shape of the \a k edges edge(0), ..., edge(k - 1), each a pair of vertex ids. A vertex
+  * of a closed 2-manifold has one cycle; where the surface touches itself at the vertex, there is
+  * one cycle per fan of triangles; where an edge at it has more than two triangles, two cycles
+  * share an end. */
+template <class Edge>
+LinkShape
+linkShape (std::size_t k, const Edge& edge)
+{
+  // (end, edge) for both ends of every edge, sorted, and a union-find over the edges.
+  constexpr std::size_t ON_STACK = 32;
+  std::array<std::pair<std::uint32_t, std::uint32_t>, 2 * ON_STACK> small_ends;
+  std::array<std::uint32_t, ON_STACK> small_parent;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> large_ends;
+  std::vector<std::uint32_t> large_parent;
+  std::pair<std::uint32_t, std::uint32_t>* ends = small_ends.data ();
+  std::uint32_t* parent = small_parent.data ();
+  if (k > ON_STACK)
+  {
+    large_ends.resize (2 * k);
+    large_parent.resize (k);
+    ends = large_ends.data ();
+    parent = large_parent.data ();
+  }
+  for (std::size_t e = 0; e < k; ++e)
+  {
+    const auto [a, b] = edge (e);
+    ends[2 * e] = {a, static_cast<std::uint32_t> (e)};
+    ends[2 * e + 1] = {b, static_cast<std::uint32_t> (e)};
+    parent[e] = static_cast<std::uint32_t> (e);
+  }
+  std::sort (ends, ends + 2 * k);
+  const auto root = [&] (std::uint32_t e) {
+    while (parent[e] != e)
+      e = parent[e] = parent[parent[e]];
+    return e;
+  };
+  LinkShape shape{static_cast<std::uint32_t> (k), true};
+  for (std::size_t a = 0, b = 0; a < 2 * k; a = b)
+  {
+    for (b = a + 1; b < 2 * k && ends[b].first == ends[a].first; ++b)
+    {
+      const std::uint32_t p = root (ends[a].second), q = root (ends[b].second);
+      if (p != q)
+      {
+        parent[p] = q;
+        --shape.parts;
+      }
+    }
+    shape.cycles = shape.cycles && b - a == 2;
+  }
+  return shape;
+}
+
 /** \brief Do the edges [first, last) (pairs of vertex ids) make one cycle, each vertex on it in
-  * exactly two of them? A vertex of a closed 2-manifold has such a link: the edges opposite it in
-  * its triangles. */
+  * exactly two of them? A vertex of a closed 2-manifold has such a link. */
 template <class It>
 bool
 isOneCycle (It first, It last)
@@ -22,39 +81,8 @@ isOneCycle (It first, It last)
   const auto k = static_cast<std::size_t> (last - first);
   if (k < 3)
     return false;
-  // (end, edge) for both ends of every edge, sorted: a cycle has each end exactly twice.
-  constexpr std::size_t ON_STACK = 64;
-  std::array<std::pair<std::uint32_t, std::uint32_t>, ON_STACK> small;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> large;
-  std::pair<std::uint32_t, std::uint32_t>* ends = small.data ();
-  if (2 * k > ON_STACK)
-  {
-    large.resize (2 * k);
-    ends = large.data ();
-  }
-  for (std::size_t e = 0; e < k; ++e)
-  {
-    ends[2 * e] = {first[e][0], static_cast<std::uint32_t> (e)};
-    ends[2 * e + 1] = {first[e][1], static_cast<std::uint32_t> (e)};
-  }
-  std::sort (ends, ends + 2 * k);
-  for (std::size_t a = 0; a < 2 * k; a += 2)
-    if (ends[a].first != ends[a + 1].first || (a + 2 < 2 * k && ends[a + 2].first == ends[a].first))
-      return false;
-  // Walk from edge 0 until back at its first end: one cycle if that took every edge.
-  const auto other_edge = [&] (std::uint32_t end, std::uint32_t edge) {
-    const auto* at = std::lower_bound (ends, ends + 2 * k, std::make_pair (end, std::uint32_t (0)));
-    return at[0].second == edge ? at[1].second : at[0].second;
-  };
-  std::uint32_t edge = 0, end = first[0][1];
-  std::size_t steps = 1;
-  while (end != first[0][0])
-  {
-    edge = other_edge (end, edge);
-    end = first[edge][0] == end ? first[edge][1] : first[edge][0];
-    ++steps;
-  }
-  return steps == k;
+  const LinkShape shape = linkShape (k, [&] (std::size_t e) { return std::make_pair (first[e][0], first[e][1]); });
+  return shape.cycles && shape.parts == 1;
 }
 
 } // namespace pcl_wrap::detail

@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/surface_handles.h"
 
+#include "surface/link_cycle.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 
@@ -192,35 +193,14 @@ public:
     * surface is a 2-manifold, more where it touches itself there (a pinch). */
   std::uint32_t fansAround (std::uint32_t v) const
   {
-    std::array<std::uint32_t, 64> vertex{}, parent{};
-    std::uint32_t n = 0;
-    const auto index = [&] (std::uint32_t w) {
-      for (std::uint32_t i = 0; i < n; ++i)
-        if (vertex[i] == w)
-          return i;
-      vertex[n] = w;
-      parent[n] = n;
-      return n++;
-    };
-    const auto root = [&] (std::uint32_t i) {
-      while (parent[i] != i)
-        i = parent[i];
-      return i;
-    };
-    if (around_.begin[v + 1] - around_.begin[v] > 32)
-      return 1; // not looked into: taken for a 2-manifold vertex, one fan
-    for (std::uint32_t k = around_.begin[v]; k < around_.begin[v + 1]; ++k)
-    {
-      const Triangle& t = triangles_[around_.triangle[k]];
-      const int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-      const std::uint32_t a = root (index (t[(at + 1) % 3])), b = root (index (t[(at + 2) % 3]));
-      if (a != b)
-        parent[a] = b;
-    }
-    std::uint32_t fans = 0;
-    for (std::uint32_t i = 0; i < n; ++i)
-      fans += parent[i] == i;
-    return fans;
+    const std::uint32_t first = around_.begin[v];
+    return linkShape (around_.begin[v + 1] - first,
+                      [&] (std::size_t k) {
+                        const Triangle& t = triangles_[around_.triangle[first + k]];
+                        const int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+                        return std::make_pair (t[(at + 1) % 3], t[(at + 2) % 3]);
+                      })
+        .parts;
   }
 
   /** Clears the flags in \a look of the vertices more than \a rings rings from all of \a seeds. */
@@ -402,17 +382,21 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
       on[v] = 1;
   for (std::uint32_t v = 0; v < num_vertices; ++v)
     vertices[parts.find (v)] += on[v];
+  // Flags in look each vertex flagged in where whose part has a genus (a closed surface of genus g
+  // has V - F / 2 = 2 - 2g); says whether it flagged any.
   std::vector<std::uint8_t> look (num_vertices, 0);
-  bool any = false;
-  for (std::uint32_t v = 0; v < num_vertices; ++v)
-  {
-    const std::uint32_t p = parts.find (v);
-    // A closed surface of genus g: V - F / 2 = 2 - 2g.
-    look[v] = on[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
-    any = any || look[v];
-  }
+  const auto lookOnHandles = [&] (const std::vector<std::uint8_t>& where) {
+    bool any = false;
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+    {
+      const std::uint32_t p = parts.find (v);
+      look[v] = where[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
+      any = any || look[v];
+    }
+    return any;
+  };
   SmallHandlePatches out;
-  if (!any)
+  if (!lookOnHandles (on))
     return out;
   const HandleFinder finder (triangles, num_vertices);
   {
@@ -426,14 +410,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
     });
     for (std::uint32_t v = 0; v < num_vertices; ++v)
       vertices[parts.find (v)] += fans[v] - 1;
-    any = false;
-    for (std::uint32_t v = 0; v < num_vertices; ++v)
-    {
-      const std::uint32_t p = parts.find (v);
-      look[v] = look[v] && vertices[p] - faces[p] / 2 < 2;
-      any = any || look[v];
-    }
-    if (!any)
+    if (!lookOnHandles (look))
       return out;
   }
   if (near)
