@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -20,19 +19,14 @@ isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x)
 {
   if (complex.dimension () != 3)
     return false;
-  // Per triangle, on how many of X's tetrahedra (0, 1 or 2).
-  std::vector<std::atomic<std::uint8_t>> on (complex.size (2));
-  parallelForEach (complex.size (3), [&] (std::size_t t) {
-    if (x.contains ({3, static_cast<SimplexId> (t)}))
-      for (int i = 0; i < 4; ++i)
-        on[complex.facet (3, static_cast<SimplexId> (t), i).id].fetch_add (1, std::memory_order_relaxed);
-  });
-  const std::size_t sheet = countInParallel (complex.size (2), [&] (std::size_t f) {
-    return x.contains ({2, static_cast<SimplexId> (f)}) && on[f].load (std::memory_order_relaxed) == 0;
-  });
-  const std::size_t bounding =
-      countInParallel (complex.size (2), [&] (std::size_t f) { return on[f].load (std::memory_order_relaxed) == 1; });
-  return sheet > bounding;
+  // X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2).
+  const auto trianglesOn = [&] (std::uint32_t tetrahedra) {
+    return countInParallel (complex.size (2), [&] (std::size_t f) {
+      const Simplex triangle{2, static_cast<SimplexId> (f)};
+      return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
+    });
+  };
+  return trianglesOn (0) > trianglesOn (1); // sheet triangles against bounding ones
 }
 
 std::size_t
