@@ -364,24 +364,28 @@ SmallHandlePatches
 smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
                     const std::vector<std::uint32_t>* near)
 {
-  // The genus of each connected part, from V - E + F with E = 3F / 2.
-  UnionFind parts (num_vertices);
-  for (const Triangle& t : triangles)
-    for (int i = 1; i < 3; ++i)
-    {
-      const std::uint32_t p = parts.find (t[0]), q = parts.find (t[i]);
-      if (p != q)
-        parts.attach (p, q);
-    }
+  // The genus of each connected part, from V - E + F with E = 3F / 2. The parts are found on all
+  // threads: a surface of genus 0, which is not searched, pays this alone.
+  std::vector<std::uint32_t> part (num_vertices);
+  {
+    UnionFind parts;
+    parts.resetInParallel (num_vertices);
+    parallelForEach (triangles.size (), [&] (std::size_t k) {
+      parts.uniteConcurrently (triangles[k][0], triangles[k][1]);
+      parts.uniteConcurrently (triangles[k][0], triangles[k][2]);
+    });
+    parallelForEach (num_vertices,
+                     [&] (std::size_t v) { part[v] = parts.findConcurrently (static_cast<std::uint32_t> (v)); });
+  }
   std::vector<long> faces (num_vertices, 0), vertices (num_vertices, 0);
-  for (const Triangle& t : triangles)
-    ++faces[parts.find (t[0])];
   std::vector<std::uint8_t> on (num_vertices, 0);
   for (const Triangle& t : triangles)
-    for (std::uint32_t v : t)
-      on[v] = 1;
+  {
+    ++faces[part[t[0]]];
+    on[t[0]] = on[t[1]] = on[t[2]] = 1;
+  }
   for (std::uint32_t v = 0; v < num_vertices; ++v)
-    vertices[parts.find (v)] += on[v];
+    vertices[part[v]] += on[v];
   // Flags in look each vertex flagged in where whose part has a genus (a closed surface of genus g
   // has V - F / 2 = 2 - 2g); says whether it flagged any.
   std::vector<std::uint8_t> look (num_vertices, 0);
@@ -389,7 +393,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
     bool any = false;
     for (std::uint32_t v = 0; v < num_vertices; ++v)
     {
-      const std::uint32_t p = parts.find (v);
+      const std::uint32_t p = part[v];
       look[v] = where[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
       any = any || look[v];
     }
@@ -409,7 +413,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
         fans[v] = finder.fansAround (static_cast<std::uint32_t> (v));
     });
     for (std::uint32_t v = 0; v < num_vertices; ++v)
-      vertices[parts.find (v)] += fans[v] - 1;
+      vertices[part[v]] += fans[v] - 1;
     if (!lookOnHandles (look))
       return out;
   }
