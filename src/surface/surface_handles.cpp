@@ -110,19 +110,13 @@ public:
     s.in_patch[v] = stamp;
     s.front.assign (1, v);
     for (int ring = 0; ring < HANDLE_RINGS; ++ring)
-    {
-      s.next.clear ();
-      for (std::uint32_t u : s.front)
-        forNeighbours (u, [&] (std::uint32_t w) {
-          if (s.in_patch[w] != stamp)
-          {
-            s.in_patch[w] = stamp;
-            s.vertices.push_back (w);
-            s.next.push_back (w);
-          }
-        });
-      s.front.swap (s.next);
-    }
+      nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
+        if (s.in_patch[w] == stamp)
+          return false;
+        s.in_patch[w] = stamp;
+        s.vertices.push_back (w);
+        return true;
+      });
     // The patch's triangles (those with three vertices in it) and its boundary edges (on one of
     // them): V - E + F with E = (3 F + boundary) / 2.
     long faces = 0, boundary = 0;
@@ -215,18 +209,12 @@ public:
         front.push_back (v);
       }
     for (int ring = 0; ring < rings && !front.empty (); ++ring)
-    {
-      next.clear ();
-      for (std::uint32_t u : front)
-        forNeighbours (u, [&] (std::uint32_t w) {
-          if (!near[w])
-          {
-            near[w] = 1;
-            next.push_back (w);
-          }
-        });
-      front.swap (next);
-    }
+      nextRing (front, next, [&] (std::uint32_t, std::uint32_t w) {
+        if (near[w])
+          return false;
+        near[w] = 1;
+        return true;
+      });
     for (std::uint32_t v = 0; v < n_; ++v)
       look[v] = look[v] && near[v];
   }
@@ -255,6 +243,20 @@ private:
           f (w);
   }
 
+  /** One ring of a search over the surface: the next front is the neighbours w of the front's
+    * vertices u that \a claim (u, w) takes (marking them as reached); it is then the front. */
+  template <class Claim>
+  void nextRing (std::vector<std::uint32_t>& front, std::vector<std::uint32_t>& next, const Claim& claim) const
+  {
+    next.clear ();
+    for (std::uint32_t u : front)
+      forNeighbours (u, [&] (std::uint32_t w) {
+        if (claim (u, w))
+          next.push_back (w);
+      });
+    front.swap (next);
+  }
+
   /** Starts a new search at the vertices of the patch's boundary loop \a loop: they make the
     * front, marked seen by the search. Returns the search's stamp. */
   static std::uint32_t startAtLoop (PatchScratch& s, std::uint32_t loop)
@@ -278,25 +280,21 @@ private:
     const std::uint32_t first = s.loop_of.front ().second, search = startAtLoop (s, first);
     bool joined = false;
     for (int ring = 0; ring < 2 * HANDLE_RINGS && !joined && !s.front.empty (); ++ring)
-    {
-      s.next.clear ();
-      for (std::uint32_t u : s.front)
-        forNeighbours (u, [&] (std::uint32_t w) {
-          if (s.seen[w] == search)
-            return;
-          if (s.in_patch[w] != stamp)
-          {
-            s.seen[w] = search;
-            s.next.push_back (w);
-          }
-          else if (s.in_patch[u] != stamp) // from off the patch onto its boundary
-          {
-            const std::uint32_t i = local (w);
-            joined = joined || (i < s.loop_of.size () && s.loop_of[i].first == w && s.loop_of[i].second != first);
-          }
-        });
-      s.front.swap (s.next);
-    }
+      nextRing (s.front, s.next, [&] (std::uint32_t u, std::uint32_t w) {
+        if (s.seen[w] == search)
+          return false;
+        if (s.in_patch[w] != stamp)
+        {
+          s.seen[w] = search;
+          return true;
+        }
+        if (s.in_patch[u] != stamp) // from off the patch onto its boundary
+        {
+          const std::uint32_t i = local (w);
+          joined = joined || (i < s.loop_of.size () && s.loop_of[i].first == w && s.loop_of[i].second != first);
+        }
+        return false;
+      });
     return joined;
   }
 
@@ -312,19 +310,14 @@ private:
       const std::uint32_t search = startAtLoop (s, ends[e]);
       for (std::int16_t ring = 0; !s.front.empty (); ++ring)
       {
-        s.next.clear ();
         for (std::uint32_t u : s.front)
-        {
           s.level[u] = e == 0 ? ring : std::int16_t (s.level[u] - ring);
-          forNeighbours (u, [&] (std::uint32_t w) {
-            if (s.in_patch[w] == stamp && s.seen[w] != search)
-            {
-              s.seen[w] = search;
-              s.next.push_back (w);
-            }
-          });
-        }
-        s.front.swap (s.next);
+        nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
+          if (s.in_patch[w] != stamp || s.seen[w] == search)
+            return false;
+          s.seen[w] = search;
+          return true;
+        });
       }
     }
   }
@@ -337,18 +330,12 @@ private:
     const std::uint32_t search = startAtLoop (s, loop);
     const std::size_t length = s.front.size ();
     for (int ring = 0; ring < 2 * HANDLE_RINGS && !s.front.empty (); ++ring)
-    {
-      s.next.clear ();
-      for (std::uint32_t u : s.front)
-        forNeighbours (u, [&] (std::uint32_t w) {
-          if (s.seen[w] != search && s.in_patch[w] != stamp)
-          {
-            s.seen[w] = search;
-            s.next.push_back (w);
-          }
-        });
-      s.front.swap (s.next);
-    }
+      nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
+        if (s.seen[w] == search || s.in_patch[w] == stamp)
+          return false;
+        s.seen[w] = search;
+        return true;
+      });
     return s.front.size () > 2 * length;
   }
 
