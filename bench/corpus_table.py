@@ -50,6 +50,13 @@ def right(q, case, method):
             and (method in APPROXIMATING or q.get("points_on_output", 0) >= 0.99))
 
 
+def described(q):
+    """What a run's surface came out as, for the checks' reports: pieces, genus, points on it."""
+    if q is None:
+        return "failed"
+    return "c%s g%s %.2f%% of the points" % (q.get("components"), q.get("genus"), 100 * q.get("points_on_output", 0))
+
+
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     if not args:

@@ -38,8 +38,7 @@ def main():
         for case in cases:
             q = corpus_table.run(build, "pcl_wrap", os.path.join(cases_dir, case["name"] + ".xyz"), work)
             ok = corpus_table.right(q, case, "pcl_wrap")
-            got = "failed" if q is None else "c%s g%s %.2f%% of the points" % (
-                q.get("components"), q.get("genus"), 100 * q.get("points_on_output", 0))
+            got = corpus_table.described(q)
             print("%-32s expected c%d g%d, got %s%s" % (case["name"], case["components"], case["genus"], got,
                                                       "" if ok else "  WRONG"))
             if not ok and case["name"] not in STILL_WRONG:

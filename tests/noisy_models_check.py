@@ -45,8 +45,7 @@ def main():
             case = {"components": 1, "genus": corpus.genus_of(vertices, triangles)}
             q = corpus_table.run(build, "pcl_wrap", cloud, work)
             ok = corpus_table.right(q, case, "pcl_wrap")
-            got = "failed" if q is None else "c%s g%s %.2f%% of the points" % (
-                q.get("components"), q.get("genus"), 100 * q.get("points_on_output", 0))
+            got = corpus_table.described(q)
             print("%-14s %7d noise %.2f  expected c1 g%d, got %s%s" % (name, n, k, case["genus"], got,
                                                                     "" if ok else "  WRONG"))
             if not ok:
