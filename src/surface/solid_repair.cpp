@@ -36,6 +36,7 @@ struct StarScratch
 {
   Star star;
   std::vector<std::uint32_t> edge_uses, id_of_root;
+  std::vector<std::array<std::uint32_t, 2>> link; // oneFan()'s edges
   UnionFind parts;
   SolidEulerChange::Scratch euler;
 };
@@ -700,6 +701,11 @@ private:
         left.push_back (v);
         continue;
       }
+      if (oneFan (s)) // most often so, once a neighbour's move has queued v
+      {
+        unmended_[v] = 0;
+        continue;
+      }
       bool pinched = false;
       const std::vector<std::uint32_t> flips = mendVertex (s, pinched);
       unmended_[v] = flips.empty () && pinched;
@@ -865,6 +871,26 @@ private:
       if (parts.part[k] == p)
         out.push_back (s.star[k]);
     return out;
+  }
+
+  /** Do the surface triangles around the vertex whose star \a s holds make one fan, as on a
+    * 2-manifold (surfaceVerticesToMend()'s test)? Then its star has one part on each side, and
+    * mendVertex() has nothing to do. */
+  bool oneFan (StarScratch& s) const
+  {
+    const std::uint32_t v = s.star.vertex ();
+    s.link.clear ();
+    for (std::uint32_t t : s.star.tetrahedra ())
+      for (int i = 0; inside (t) && i < 4; ++i)
+        if (tetrahedra_.vertex (t, i) != v && !inside (tetrahedra_.neighbour (t, i)))
+        {
+          LinkEdge edge{}; // the surface triangle's edge opposite v
+          for (int j = 0, k = 0; j < 4; ++j)
+            if (j != i && tetrahedra_.vertex (t, j) != v)
+              edge[k++] = tetrahedra_.vertex (t, j);
+          s.link.push_back (edge);
+        }
+    return isOneCycle (s.link.begin (), s.link.end ());
   }
 
   /** An edge (v, w) of the gathered star of v with more than two surface triangles: w, or NONE. */
