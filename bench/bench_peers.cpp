@@ -7,6 +7,7 @@
 // stages (pcl_wrap's stage times; empty for the others).
 // --points writes the input points first (for the Python peers). bench/compare.py runs it for
 // every method and dataset.
+#include "errors_reported.h"
 #include "bench_points.h"
 #include "peers.h"
 
@@ -19,8 +20,8 @@
 #include <string>
 #include <sys/resource.h>
 
-int
-main (int argc, char** argv)
+static int
+run (int argc, char** argv)
 {
   if (argc < 3)
   {
@@ -88,4 +89,10 @@ main (int argc, char** argv)
                method.c_str (), points.size (), seconds, out.normal_seconds, usage.ru_maxrss / 1024.0,
                out.vertices.size (), out.triangles.size (), out.note.c_str (), stages.c_str ());
   return 0;
+}
+
+int
+main (int argc, char** argv)
+{
+  return pcl_wrap::bench::errorsReported ("bench_peers", run, argc, argv);
 }

@@ -5,6 +5,7 @@
 // spacing is the distance to its nearest neighbour (PCL's FLANN k-d tree); its weight is
 // (C * spacing)^2. Prints, per C, the triangles of W, the share of the points on W, the hidden
 // points and the time.
+#include "errors_reported.h"
 #include "point_file.h"
 
 #include <pcl_wrap/compute_wrap.h>
@@ -18,8 +19,8 @@
 #include <string>
 #include <vector>
 
-int
-main (int argc, char** argv)
+static int
+run (int argc, char** argv)
 {
   if (argc < 2)
   {
@@ -59,4 +60,10 @@ main (int argc, char** argv)
                  100.0 * on_w.size () / points.size (), r.statistics.points_hidden, r.statistics.total_seconds);
   }
   return 0;
+}
+
+int
+main (int argc, char** argv)
+{
+  return pcl_wrap::bench::errorsReported ("bench_weights", run, argc, argv);
 }

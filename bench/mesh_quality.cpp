@@ -11,6 +11,7 @@
 //   watertight: every edge in exactly two triangles; nonmanifold_edges (> 2 triangles),
 //     boundary_edges (1), nonmanifold_vertices (triangles around it not one fan);
 //   components (by shared edges), euler, genus (closed manifolds: (2 components - euler) / 2).
+#include "errors_reported.h"
 #include "bench_points.h"
 #include "point_file.h"
 
@@ -27,6 +28,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace
@@ -47,6 +49,8 @@ readMesh (const std::string& path)
 {
   Mesh m;
   std::ifstream in (path);
+  if (!in)
+    throw std::runtime_error (path + ": cannot open");
   std::string line;
   if (path.size () > 4 && path.substr (path.size () - 4) == ".off")
   {
@@ -181,8 +185,8 @@ referenceSamples (const std::string& reference, const std::vector<Point3>& input
 
 } // namespace
 
-int
-main (int argc, char** argv)
+static int
+run (int argc, char** argv)
 {
   if (argc < 4)
   {
@@ -293,4 +297,10 @@ main (int argc, char** argv)
                    ? std::to_string ((2 * long (roots.size ()) - euler) / 2).c_str ()
                    : "null");
   return 0;
+}
+
+int
+main (int argc, char** argv)
+{
+  return pcl_wrap::bench::errorsReported ("mesh_quality", run, argc, argv);
 }
