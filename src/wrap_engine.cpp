@@ -23,9 +23,7 @@ namespace
 /** The sample: one vertex in this many along the vertex ids' Z-order curve, even in space. */
 constexpr std::size_t SAMPLE_STRIDE = 64;
 
-/** Does the wrap of an even sample of the vertices find a single layer (isSingleLayer())? A
-  * single layer needs no labels, so their flood waits until the output asks for them. The sample
-  * decides only when the labels are computed, never the output. */
+/** Does the wrap of an even sample of the vertices find a single layer (isSingleLayer())? */
 bool
 sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<double>& weights)
 {
@@ -50,6 +48,16 @@ sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<dou
 }
 
 } // namespace
+
+bool
+labelAtOnce (Output output, const std::vector<Point3>& positions, const std::vector<double>& weights, StageClock& clock)
+{
+  if (output == Output::closed || positions.size () < DefaultSurface::LABEL_ON_DEMAND_FROM)
+    return true;
+  const bool single_layer = sampleIsSingleLayer (positions, weights);
+  clock.stageDone ("sample");
+  return !single_layer;
+}
 
 WrapEngine::WrapEngine (const std::vector<Point3>& points, const std::vector<double>& weights,
                         const WrapParameters& parameters, const StageObserver& observer,
@@ -137,15 +145,7 @@ WrapEngine::startDefaultSurface (std::optional<bool> label_now)
   if (!defaultSurface ())
     return;
   if (!label_now)
-  {
-    label_now =
-        parameters_.output == Output::closed || vertex_positions_.size () < DefaultSurface::LABEL_ON_DEMAND_FROM;
-    if (!*label_now)
-    {
-      label_now = !sampleIsSingleLayer (vertex_positions_, vertex_weights_);
-      clock_.stageDone ("sample");
-    }
-  }
+    label_now = labelAtOnce (parameters_.output, vertex_positions_, vertex_weights_, clock_);
   tetrahedra_ = Tetrahedra (std::move (triangulation_.neighbours));
   surface_ = std::make_unique<DefaultSurface> (triangulation_.top_simplices, tetrahedra_, vertex_positions_,
                                                vertex_weights_, *label_now);

@@ -26,6 +26,14 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief Whether the default surface's labels are computed as soon as the tetrahedra are known
+  * (the votes before the complex is built, the flood beside the next stages) rather than when the
+  * surface needs them: always, but for a large cloud whose even sample's wrap finds a single
+  * layer (a time "sample" on \a clock), which needs no labels. It decides when, never what. */
+bool
+labelAtOnce (Output output, const std::vector<Point3>& positions, const std::vector<double>& weights,
+             StageClock& clock);
+
 /** \brief The Wrap construction as named stages over one state. run() calls them in the order of
   * the pipeline; the tests call the first ones alone to look at what they build.
   *

@@ -11,11 +11,13 @@
 #include "surface/default_surface.h"
 #include "surface/solid_labelling.h"
 #include "util/parallel_for_each.h"
+#include "wrap_engine.h"
 #include "wrap/boundary.h"
 #include "wrap/classification.h"
 #include "wrap/sink_deletion.h"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 
 namespace pcl_wrap::mpi
@@ -143,6 +145,16 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   solid = {};
   canon = {};
   detail::Tetrahedra adjacency (neighboursOf (top, positions.size ()));
+  clock.stageDone ("tetrahedra");
+  // As in one process: the votes before the complex takes its memory, the flood beside its build.
+  std::optional<detail::DefaultSurface> stage;
+  if (parameters.output != Output::raw)
+  {
+    const bool label_now = detail::labelAtOnce (parameters.output, positions, weights, clock);
+    stage.emplace (top, adjacency, positions, weights, label_now);
+    if (label_now)
+      clock.stageDone ("votes");
+  }
   const detail::SimplicialComplex complex (3, static_cast<std::uint32_t> (positions.size ()), std::move (top),
                                            adjacency.neighbourArray ());
   adjacency.attach (complex);
@@ -164,7 +176,7 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
     members[0][vertex (i)] = 1;
   detail::Subcomplex x (complex, members);
   members = {};
-  clock.stageDone ("tetrahedra");
+  clock.stageDone ("complex");
   detail::InputIndices indices (std::move (input_of_vertex));
   WrapStatistics& stats = result.statistics;
   if (parameters.threshold.deletes ())
@@ -186,8 +198,7 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
     return;
   }
 
-  detail::DefaultSurface stage (complex.vertexArray (3), adjacency, positions, weights, false);
-  detail::DefaultSurface::Output out = stage.surface (x, positions, false, file.viewpoint, result.statistics, clock);
+  detail::DefaultSurface::Output out = stage->surface (x, positions, false, file.viewpoint, result.statistics, clock);
   if (out.split)
     indices.takeSplit (*out.split, out.w, file.points.size (), result);
   result.surface = indices.surface (out.w);
