@@ -101,22 +101,27 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
 {
   // The points and vertex ids of one process: S selected from the file, then the vertices (the
   // points not hidden) numbered along the Z-order curve of S.
-  const detail::InputPoints input = detail::selectInputPoints (file.points, file.weights);
-  std::vector<std::uint8_t> is_hidden (file.points.size (), 0);
-  for (PointIndex h : hidden)
-    is_hidden[h] = 1;
   std::vector<std::uint32_t> vertex_of_index (file.points.size (), NONE);
   std::vector<Point3> positions;
   std::vector<double> weights;
   std::vector<PointIndex> input_of_vertex;
-  for (std::uint32_t p : detail::zOrder (input.positions))
-    if (!is_hidden[input.input_index[p]])
-    {
-      vertex_of_index[input.input_index[p]] = static_cast<std::uint32_t> (positions.size ());
-      positions.push_back (input.positions[p]);
-      weights.push_back (input.weights[p]);
-      input_of_vertex.push_back (input.input_index[p]);
-    }
+  {
+    const detail::InputPoints input = detail::selectInputPoints (file.points, file.weights);
+    positions.reserve (input.positions.size ());
+    weights.reserve (input.positions.size ());
+    input_of_vertex.reserve (input.positions.size ());
+    std::vector<std::uint8_t> is_hidden (file.points.size (), 0);
+    for (PointIndex h : hidden)
+      is_hidden[h] = 1;
+    for (std::uint32_t p : detail::zOrder (input.positions))
+      if (!is_hidden[input.input_index[p]])
+      {
+        vertex_of_index[input.input_index[p]] = static_cast<std::uint32_t> (positions.size ());
+        positions.push_back (input.positions[p]);
+        weights.push_back (input.weights[p]);
+        input_of_vertex.push_back (input.input_index[p]);
+      }
+  } // S is needed no more: freed before the complex is built
   const auto vertex = [&] (std::uint32_t index) {
     if (index >= vertex_of_index.size () || vertex_of_index[index] == NONE)
       throw std::runtime_error ("a tile sent a simplex on a point that is not a vertex");
