@@ -3,8 +3,9 @@
 //
 // mesh_quality MESH.obj POINTS REFERENCE [SAMPLES]: the quality of a reconstruction, as one JSON
 // line. POINTS: the input (a file, or SHAPE:N:SEED as bench_peers makes it); REFERENCE: the
-// true surface, "sphere", "torus", a mesh file (.off/.obj with faces: sampled by area), or
-// "points" (the input points themselves, for a scan without a mesh).
+// true surface, "sphere", "torus", a mesh file (.off/.obj with faces: sampled by area),
+// "points" (the input points themselves, for a scan without a mesh), or "none" (no distances:
+// chamfer and hausdorff are -1).
 //   chamfer, hausdorff: between SAMPLES points on the output (by area) and on the reference,
 //     relative to the reference's bounding box diagonal (PCL k-d trees);
 //   points_on_output: share of input points that are vertices of some triangle (in floats);
@@ -163,6 +164,8 @@ referenceSamples (const std::string& reference, const std::vector<Point3>& input
   std::vector<Point3> out;
   if (reference == "points")
     return input;
+  if (reference == "none")
+    return out;
   if (reference == "sphere")
     for (std::size_t k = 0; k < count; ++k)
     {
