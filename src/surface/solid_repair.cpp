@@ -36,7 +36,7 @@ struct StarScratch
 {
   Star star;
   std::vector<std::uint32_t> edge_uses, id_of_root;
-  std::vector<std::array<std::uint32_t, 2>> link; // oneFan()'s edges
+  std::vector<std::array<std::uint32_t, 2>> link; // gatherSurfaceLink()'s edges
   UnionFind parts;
   SolidEulerChange::Scratch euler;
 };
@@ -873,10 +873,9 @@ private:
     return out;
   }
 
-  /** Do the surface triangles around the vertex whose star \a s holds make one fan, as on a
-    * 2-manifold (surfaceVerticesToMend()'s test)? Then its star has one part on each side, and
-    * mendVertex() has nothing to do. */
-  bool oneFan (StarScratch& s) const
+  /** The link of the vertex whose star \a s holds in the surface, into s.link: per surface
+    * triangle at it (counted from its inside tetrahedron), the edge opposite the vertex. */
+  void gatherSurfaceLink (StarScratch& s) const
   {
     const std::uint32_t v = s.star.vertex ();
     s.link.clear ();
@@ -884,34 +883,31 @@ private:
       for (int i = 0; inside (t) && i < 4; ++i)
         if (tetrahedra_.vertex (t, i) != v && !inside (tetrahedra_.neighbour (t, i)))
         {
-          LinkEdge edge{}; // the surface triangle's edge opposite v
+          LinkEdge edge{};
           for (int j = 0, k = 0; j < 4; ++j)
             if (j != i && tetrahedra_.vertex (t, j) != v)
               edge[k++] = tetrahedra_.vertex (t, j);
           s.link.push_back (edge);
         }
+  }
+
+  /** Do the surface triangles around the vertex whose star \a s holds make one fan, as on a
+    * 2-manifold (surfaceVerticesToMend()'s test)? Then its star has one part on each side, and
+    * mendVertex() has nothing to do. */
+  bool oneFan (StarScratch& s) const
+  {
+    gatherSurfaceLink (s);
     return isOneCycle (s.link.begin (), s.link.end ());
   }
 
-  /** An edge (v, w) of the gathered star of v with more than two surface triangles: w, or NONE. */
+  /** An edge (v, w) of the gathered star of v with more than two surface triangles: w, or NONE.
+    * Its link edges meet at w more than twice. */
   std::uint32_t pinchedEdge (StarScratch& s) const
   {
+    gatherSurfaceLink (s);
     s.edge_uses.clear ();
-    for (std::uint32_t t : s.star.tetrahedra ())
-      for (int i = 0; i < 4; ++i)
-      {
-        if (tetrahedra_.vertex (t, i) == s.star.vertex ())
-          continue;
-        const std::uint32_t u = tetrahedra_.neighbour (t, i);
-        if (inside (t) == inside (u) || (u != OUTSIDE_HULL && inside (t) == 0))
-          continue; // not a surface triangle, or counted from its inside tetrahedron
-        for (int j = 0; j < 4; ++j)
-        {
-          const std::uint32_t w = tetrahedra_.vertex (t, j);
-          if (j != i && w != s.star.vertex ())
-            s.edge_uses.push_back (w);
-        }
-      }
+    for (const LinkEdge& edge : s.link)
+      s.edge_uses.insert (s.edge_uses.end (), edge.begin (), edge.end ());
     std::sort (s.edge_uses.begin (), s.edge_uses.end ());
     for (std::size_t a = 0; a < s.edge_uses.size ();)
     {
