@@ -5,7 +5,8 @@
 // quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
 // plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not; a surface
 // touching itself at a vertex has no handle there; asked to look near some vertices only, it
-// looks nowhere else.
+// looks nowhere else; on a surface of genus 0, a thin bar between two slabs is found from the
+// sharp saddles at its ends.
 #include "surface/surface_handles.h"
 
 #include <gtest/gtest.h>
@@ -37,16 +38,15 @@ addTorus (std::uint32_t around, std::uint32_t tube, std::uint32_t first, std::ve
     }
 }
 
-/** The boundary of a plate of \a size x \a size x \a thickness unit voxels with a square hole of
-  * \a hole x \a hole voxels through its middle: each boundary square of a voxel cut into two
-  * triangles, oriented outwards. Vertex ids number the grid's corners. */
+/** The boundary of a solid of unit voxels within \a size x \a size x \a height, those where
+  * \a solid (x, y, z) holds: each boundary square of a voxel cut into two triangles, oriented
+  * outwards. Vertex ids number the grid's corners, x fastest (voxelCorner()). */
+template <class Solid>
 std::vector<Triangle>
-plateWithHole (int size, int thickness, int hole)
+voxelBoundary (int size, int height, const Solid& solid)
 {
-  const auto solid = [&] (int x, int y, int z) {
-    const int lo = (size - hole) / 2;
-    const bool in_hole = x >= lo && x < lo + hole && y >= lo && y < lo + hole;
-    return x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < thickness && !in_hole;
+  const auto inside = [&] (int x, int y, int z) {
+    return x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < height && solid (x, y, z);
   };
   const auto id = [&] (std::array<int, 3> c) {
     return static_cast<std::uint32_t> (c[0] + (size + 1) * (c[1] + (size + 1) * c[2]));
@@ -54,13 +54,13 @@ plateWithHole (int size, int thickness, int hole)
   std::vector<Triangle> triangles;
   for (int x = 0; x < size; ++x)
     for (int y = 0; y < size; ++y)
-      for (int z = 0; z < thickness; ++z)
+      for (int z = 0; z < height; ++z)
         for (int a = 0; a < 3; ++a)
           for (int sign : {-1, 1})
           {
             std::array<int, 3> next{x, y, z};
             next[a] += sign;
-            if (!solid (x, y, z) || solid (next[0], next[1], next[2]))
+            if (!inside (x, y, z) || inside (next[0], next[1], next[2]))
               continue;
             // The square on the voxel's face across axis a, counter-clockwise seen from outside.
             const int b = (a + 1) % 3, c = (a + 2) % 3;
@@ -78,6 +78,24 @@ plateWithHole (int size, int thickness, int hole)
             triangles.push_back ({id (corner[0]), id (corner[2]), id (corner[3])});
           }
   return triangles;
+}
+
+/** The grid corner of vertex \a id of voxelBoundary (size, ...). */
+std::array<int, 3>
+voxelCorner (std::uint32_t id, int size)
+{
+  const auto n = static_cast<std::uint32_t> (size + 1);
+  return {static_cast<int> (id % n), static_cast<int> (id / n % n), static_cast<int> (id / (n * n))};
+}
+
+/** The boundary of a plate of \a size x \a size x \a thickness unit voxels with a square hole of
+  * \a hole x \a hole voxels through its middle. */
+std::vector<Triangle>
+plateWithHole (int size, int thickness, int hole)
+{
+  const int lo = (size - hole) / 2;
+  return voxelBoundary (size, thickness,
+                        [&] (int x, int y, int) { return !(x >= lo && x < lo + hole && y >= lo && y < lo + hole); });
 }
 
 /** An octahedron: a sphere, genus 0. */
@@ -246,4 +264,52 @@ TEST (SurfaceHandles, TunnelLevelsRunFromOneFaceToTheOther)
 }
 
 } // namespace
+/** Two slabs of 12 x 12 x 3 voxels, one above the other, joined by a bar one voxel wide and three
+  * long (x and y 5 to 6, z 3 to 6): a surface of genus 0. */
+std::vector<Triangle>
+slabsJoinedByABar ()
+{
+  return voxelBoundary (12, 9, [] (int x, int y, int z) { return z < 3 || z >= 6 || (x == 5 && y == 5); });
+}
+
+/** The grid corners of voxelBoundary (12, ...) as positions, those along the bar's middle moved
+  * out from its axis by \a bulge in x and in y. */
+std::vector<std::array<double, 3>>
+slabPositions (double bulge)
+{
+  std::vector<std::array<double, 3>> positions (13 * 13 * 10);
+  for (std::uint32_t v = 0; v < positions.size (); ++v)
+  {
+    const std::array<int, 3> c = voxelCorner (v, 12);
+    positions[v] = {double (c[0]), double (c[1]), double (c[2])};
+    if (c[2] > 3 && c[2] < 6 && (c[0] == 5 || c[0] == 6) && (c[1] == 5 || c[1] == 6))
+      for (int i = 0; i < 2; ++i)
+        positions[v][i] += c[i] == 5 ? -bulge : bulge;
+  }
+  return positions;
+}
+
+TEST (SurfaceHandles, ABarBetweenTwoPartsIsFoundAtItsSharpSaddles)
+{
+  // Where the bar, bulging, meets a slab, the angles at each of its four corners add up to
+  // 2 pi + 0.68 pi: the patches next to them go round the bar, and its surface opens out past
+  // both ends. Without positions the surface, of genus 0, is not looked at.
+  const std::vector<Triangle> triangles = slabsJoinedByABar ();
+  const auto num_vertices = static_cast<std::uint32_t> (13 * 13 * 10);
+  EXPECT_TRUE (detail::smallHandlePatches (triangles, num_vertices).centres.empty ());
+  const std::vector<std::array<double, 3>> positions = slabPositions (0.3);
+  const detail::SmallHandlePatches bar = detail::smallHandlePatches (triangles, num_vertices, nullptr, &positions);
+  ASSERT_FALSE (bar.centres.empty ());
+  for (std::size_t i = 0; i < bar.centres.size (); ++i)
+  {
+    EXPECT_TRUE (bar.tunnel[i]);
+    const std::array<int, 3> c = voxelCorner (bar.centres[i], 12);
+    EXPECT_TRUE (c[0] >= 4 && c[0] <= 7 && c[1] >= 4 && c[1] <= 7 && c[2] >= 3 && c[2] <= 6)
+        << c[0] << " " << c[1] << " " << c[2];
+  }
+  // A slab alone has no sharp saddle.
+  const std::vector<Triangle> slab = voxelBoundary (12, 3, [] (int, int, int) { return true; });
+  EXPECT_TRUE (detail::smallHandlePatches (slab, num_vertices, nullptr, &positions).centres.empty ());
+}
+
 } // namespace pcl_wrap::test

@@ -215,7 +215,7 @@ private:
                                               const std::vector<Point3>& positions,
                                               const std::vector<std::uint32_t>* near)
   {
-    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices (), near);
+    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices (), near, &positions);
     std::vector<std::uint32_t> moved;
     if (patches.centres.empty ())
       return moved;

@@ -4,11 +4,13 @@
 
 #include "surface/link_cycle.h"
 #include "util/parallel_for_each.h"
+#include "util/portable.h"
 #include "util/union_find.h"
 
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <utility>
 
@@ -20,24 +22,22 @@ namespace
 using Triangle = std::array<std::uint32_t, 3>;
 using Edge = std::array<std::uint32_t, 2>;
 
-/** The triangles around each vertex: those of vertex v are triangle[begin[v] .. begin[v + 1]). */
+/** The triangles around each vertex: those of vertex v are triangle[begin[v] .. begin[v + 1]),
+  * ascending; found on all threads. */
 struct TrianglesAround
 {
-  std::vector<std::uint32_t> begin, triangle;
+  std::vector<std::size_t> begin;
+  FilledInParallel<std::uint32_t> triangle;
 
-  TrianglesAround (const std::vector<Triangle>& triangles, std::uint32_t n) : begin (std::size_t (n) + 1, 0)
-  {
-    for (const Triangle& t : triangles)
-      for (std::uint32_t v : t)
-        ++begin[v + 1];
-    for (std::uint32_t v = 0; v < n; ++v)
-      begin[v + 1] += begin[v];
-    triangle.resize (begin[n]);
-    std::vector<std::uint32_t> at (begin.begin (), begin.end () - 1);
-    for (std::uint32_t t = 0; t < triangles.size (); ++t)
-      for (std::uint32_t v : triangles[t])
-        triangle[at[v]++] = t;
-  }
+  TrianglesAround (const std::vector<Triangle>& triangles, std::uint32_t n)
+    : triangle (bucketInParallel<std::uint32_t> (
+          triangles.size (), n,
+          [&] (std::size_t t, auto put) {
+            for (std::uint32_t v : triangles[t])
+              put (v, static_cast<std::uint32_t> (t));
+          },
+          begin))
+  {}
 };
 
 /** Per triangle and edge (from its vertex i to the next), the opposite vertex of the other
@@ -51,7 +51,7 @@ oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround&
     {
       const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
       opposite[t][i] = a; // none: the edge is on one triangle
-      for (std::uint32_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
+      for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
       {
         const Triangle& u = triangles[around.triangle[k]];
         if (around.triangle[k] == t)
@@ -63,6 +63,52 @@ oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround&
     }
   });
   return opposite;
+}
+
+/** atan2 (y, x) for y >= 0, within 2e-5: a polynomial for the arc tangent on [0, 1]. */
+double
+angleOf (double y, double x)
+{
+  const double ax = std::fabs (x), high = std::max (ax, y);
+  if (high == 0.0)
+    return 0.0;
+  const double z = std::min (ax, y) / high, z2 = z * z;
+  double a = z * (0.99997726 +
+                  z2 * (-0.33262347 + z2 * (0.19354346 + z2 * (-0.11643287 + z2 * (0.05265332 + z2 * -0.01172120)))));
+  if (y > ax)
+    a = M_PI / 2 - a;
+  return x < 0 ? M_PI - a : a;
+}
+
+/** The vertices flagged in \a look at which the angles of the triangles around them add up to
+  * more than 2 pi + SADDLE_EXCESS, ascending. The angles are added up in fixed point, on all
+  * threads: integer sums do not depend on the order. */
+std::vector<std::uint32_t>
+sharpSaddles (const std::vector<Triangle>& triangles, const std::vector<std::array<double, 3>>& positions,
+              const std::vector<std::uint8_t>& look)
+{
+  constexpr double UNIT = 1099511627776.0; // 2^40 units to a radian
+  constexpr auto HALF_TURN = static_cast<std::int64_t> (M_PI * UNIT);
+  std::vector<std::int64_t> sum (look.size (), 0);
+  parallelForEach (triangles.size (), [&] (std::size_t k) {
+    const Triangle& t = triangles[k];
+    if (!look[t[0]]) // nor its other vertices, of the same part
+      return;
+    std::int64_t third = HALF_TURN; // the angles of a triangle add up to pi
+    for (int i = 0; i < 2; ++i)
+    {
+      const std::array<double, 3>&p = positions[t[i]], &q = positions[t[(i + 1) % 3]], &r = positions[t[(i + 2) % 3]];
+      const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+      const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const auto angle = static_cast<std::int64_t> (UNIT * angleOf (std::sqrt (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
+                                                                    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]));
+      relaxedFetchAdd (&sum[t[i]], angle);
+      third -= angle;
+    }
+    relaxedFetchAdd (&sum[t[2]], third);
+  });
+  const auto above = static_cast<std::int64_t> ((2.0 * M_PI + SADDLE_EXCESS) * UNIT);
+  return indicesWhere (sum.size (), [&] (std::size_t v) { return sum[v] > above; });
 }
 
 /** One thread's marks and lists, reused from vertex to vertex. */
@@ -89,8 +135,13 @@ enum class HandleKind
 class HandleFinder
 {
 public:
-  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n)
-    : triangles_ (triangles), around_ (triangles, n), opposite_ (oppositeVertices (triangles, around_)), n_ (n)
+  /** With \a match_edges, the edges' opposite vertices are found first, all at once, for a search
+    * of a whole part; otherwise as a patch needs them. */
+  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, bool match_edges)
+    : triangles_ (triangles),
+      around_ (triangles, n),
+      opposite_ (match_edges ? oppositeVertices (triangles, around_) : std::vector<std::array<std::uint32_t, 3>>{}),
+      n_ (n)
   {}
 
   /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube?
@@ -122,7 +173,7 @@ public:
     long faces = 0, boundary = 0;
     s.edges.clear ();
     for (std::uint32_t u : s.vertices)
-      for (std::uint32_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+      for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
       {
         const Triangle& t = triangles_[around_.triangle[k]];
         if (u != std::min ({t[0], t[1], t[2]}) || s.in_patch[t[0]] != stamp || s.in_patch[t[1]] != stamp ||
@@ -131,7 +182,7 @@ public:
         ++faces;
         for (int i = 0; i < 3; ++i)
         {
-          const std::uint32_t d = opposite_[around_.triangle[k]][i];
+          const std::uint32_t d = opposite (around_.triangle[k], i);
           if (d == t[i] || s.in_patch[d] != stamp)
           {
             ++boundary;
@@ -187,7 +238,7 @@ public:
     * surface is a 2-manifold, more where it touches itself there (a pinch). */
   std::uint32_t fansAround (std::uint32_t v) const
   {
-    const std::uint32_t first = around_.begin[v];
+    const std::size_t first = around_.begin[v];
     return linkShape (around_.begin[v + 1] - first,
                       [&] (std::size_t k) {
                         const Triangle& t = triangles_[around_.triangle[first + k]];
@@ -234,10 +285,28 @@ public:
   }
 
 private:
+  /** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to
+    * the next); t's vertex i where the edge is on no other. */
+  std::uint32_t opposite (std::uint32_t t, int i) const
+  {
+    if (!opposite_.empty ())
+      return opposite_[t][i];
+    const std::uint32_t a = triangles_[t][i], b = triangles_[t][(i + 1) % 3];
+    std::uint32_t found = a;
+    for (std::size_t k = around_.begin[a]; k < around_.begin[a + 1]; ++k)
+    {
+      const Triangle& u = triangles_[around_.triangle[k]];
+      for (int j = 0; j < 3; ++j)
+        if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
+          found = u[(j + 2) % 3];
+    }
+    return found;
+  }
+
   template <class F>
   void forNeighbours (std::uint32_t u, const F& f) const
   {
-    for (std::uint32_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+    for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
       for (std::uint32_t w : triangles_[around_.triangle[k]])
         if (w != u)
           f (w);
@@ -349,10 +418,10 @@ private:
 
 SmallHandlePatches
 smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
-                    const std::vector<std::uint32_t>* near)
+                    const std::vector<std::uint32_t>* near, const std::vector<std::array<double, 3>>* positions)
 {
   // The genus of each connected part, from V - E + F with E = 3F / 2. The parts are found on all
-  // threads: a surface of genus 0, which is not searched, pays this alone.
+  // threads.
   std::vector<std::uint32_t> part (num_vertices);
   {
     UnionFind parts;
@@ -387,9 +456,30 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
     return any;
   };
   SmallHandlePatches out;
-  if (!lookOnHandles (on))
+  bool on_handles = lookOnHandles (on);
+  // The vertices of the closed parts of genus 0, where the sharp saddles are looked for (a vertex
+  // where such a part touches itself, counted once per fan, only adds to its V - F / 2).
+  std::vector<std::uint8_t> of_genus_zero;
+  bool any_of_genus_zero = false;
+  if (positions)
+  {
+    of_genus_zero.resize (num_vertices);
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+    {
+      const std::uint32_t p = part[v];
+      of_genus_zero[v] = on[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 >= 2;
+      any_of_genus_zero = any_of_genus_zero || of_genus_zero[v];
+    }
+  }
+  if (!on_handles && !any_of_genus_zero)
     return out;
-  const HandleFinder finder (triangles, num_vertices);
+  std::vector<std::uint32_t> saddles;
+  if (any_of_genus_zero)
+    saddles = sharpSaddles (triangles, *positions, of_genus_zero);
+  if (!on_handles && saddles.empty ())
+    return out;
+  const HandleFinder finder (triangles, num_vertices, on_handles);
+  if (on_handles)
   {
     // Where the surface touches itself at a vertex (a pinch the mending left, split after the
     // repair), the part has one vertex fewer than a surface of its genus, and would look as if it
@@ -401,8 +491,16 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
     });
     for (std::uint32_t v = 0; v < num_vertices; ++v)
       vertices[part[v]] += fans[v] - 1;
-    if (!lookOnHandles (look))
-      return out;
+    on_handles = lookOnHandles (look);
+  }
+  if (!on_handles && saddles.empty ())
+    return out;
+  if (!saddles.empty ())
+  {
+    // The saddles and their neighbours: the patch around one next to a tube's end goes round it.
+    finder.keepNear (saddles, 1, of_genus_zero);
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+      look[v] = look[v] || of_genus_zero[v];
   }
   if (near)
     finder.keepNear (*near, 2 * HANDLE_RINGS, look);

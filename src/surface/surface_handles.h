@@ -30,21 +30,35 @@ struct SmallHandlePatches
 /** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
   * a few rings of triangles around the vertex go round.
   *
-  * Only the connected parts of the surface whose genus (from the Euler characteristic, V - F / 2
+  * The connected parts of the surface whose genus (from the Euler characteristic, V - F / 2
   * for a closed surface, a vertex where the surface touches itself counted once per fan of
-  * triangles there) is above zero are looked at, around the centres of a maximal independent
-  * set of their vertices (each vertex is one or next to one). Around a centre, the triangles
-  * within HANDLE_RINGS rings make a patch; it is a disc where the surface has no small handle. Where
-  * it is not, it holds a handle (its own genus is above zero), or it goes round a thin tube: a
-  * handle's when the rest of the surface joins the patch's boundary loops near the patch (within
-  * twice as many rings again), a thin part's (a finger, a tail) when a loop cuts a part off, a
-  * tunnel's when the surface opens out past both ends (a hole through a wall, a web across a
-  * gap), a ring's when it does not (the tube closes far away).
+  * triangles there) is above zero are looked at; given the vertices' positions, so are the
+  * sharp saddles of the parts of genus 0 and their neighbours, where a thin tube may join two
+  * wider parts (a bridge between two objects). The angles of the triangles at a vertex add up to
+  * 2 pi less the surface's curvature there; a tube that joins two closed surfaces into one takes
+  * 4 pi of curvature away (Gauss-Bonnet), about 2 pi where each of its ends meets a wider part,
+  * and on a tube a few triangles across that lies on a few vertices, whose angles add up to more
+  * than 2 pi + SADDLE_EXCESS. On a sampled surface, smooth or noisy, few vertices do. The
+  * centres are a maximal independent set of the vertices looked at (each is one or next to one).
+  * Around a centre, the triangles within HANDLE_RINGS rings make a patch; it is a disc where the
+  * surface has no small handle. Where it is not, it holds a handle (its own genus is above zero),
+  * or it goes round a thin tube: a handle's when the rest of the surface joins the patch's
+  * boundary loops near the patch (within twice as many rings again), a thin part's (a finger, a
+  * tail) when a loop cuts a part off, a tunnel's when the surface opens out past both ends (a hole
+  * through a wall, a web across a gap), a ring's when it does not (the tube closes far away).
   * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
-  * \param[in] near if given, only centres within 2 HANDLE_RINGS rings of one of these vertices */
+  * \param[in] near if given, only centres within 2 HANDLE_RINGS rings of one of these vertices
+  * \param[in] positions if given, per vertex: the parts of genus 0 are looked at near sharp saddles */
 SmallHandlePatches
 smallHandlePatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices,
-                    const std::vector<std::uint32_t>* near = nullptr);
+                    const std::vector<std::uint32_t>* near = nullptr,
+                    const std::vector<std::array<double, 3>>* positions = nullptr);
+
+/** \brief How far above 2 pi the angles at a sharp saddle add up (smallHandlePatches()): the end
+  * of a tube four vertices around, where it meets a plane at a right angle (a quarter of 2 pi on
+  * each), is not quite one. The thin webs the labelling leaves across a gap between two objects
+  * end on two to four vertices. */
+constexpr double SADDLE_EXCESS = 0.5 * 3.14159265358979323846;
 
 /** \brief How many rings of triangles around a vertex smallHandlePatches() looks at. */
 constexpr int HANDLE_RINGS = 3;
