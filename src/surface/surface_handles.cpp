@@ -94,10 +94,21 @@ sharpSaddles (const std::vector<Triangle>& triangles, const std::vector<std::arr
     const Triangle& t = triangles[k];
     if (!look[t[0]]) // nor its other vertices, of the same part
       return;
+    // The corners scaled by a power of two (exactly) to coordinates below 1 in size: differences
+    // of huge coordinates would overflow.
+    double largest = 0.0;
+    for (std::uint32_t v : t)
+      for (double c : positions[v])
+        largest = std::max (largest, std::fabs (c));
+    const int exponent = largest > 0.0 ? std::ilogb (largest) + 1 : 0;
+    std::array<std::array<double, 3>, 3> corner;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        corner[i][j] = std::ldexp (positions[t[i]][j], -exponent);
     std::int64_t third = HALF_TURN; // the angles of a triangle add up to pi
     for (int i = 0; i < 2; ++i)
     {
-      const std::array<double, 3>&p = positions[t[i]], &q = positions[t[(i + 1) % 3]], &r = positions[t[(i + 2) % 3]];
+      const std::array<double, 3>&p = corner[i], &q = corner[(i + 1) % 3], &r = corner[(i + 2) % 3];
       const double a[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, b[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
       const double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
       const auto angle = static_cast<std::int64_t> (UNIT * angleOf (std::sqrt (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
