@@ -40,27 +40,32 @@ struct TrianglesAround
   {}
 };
 
-/** Per triangle and edge (from its vertex i to the next), the opposite vertex of the other
-  * triangle on that edge; found on all threads among the triangles around the edge's first vertex. */
+/** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to the
+  * next), found among the triangles around the edge's first vertex; t's vertex i where the edge is
+  * on no other. */
+std::uint32_t
+oppositeVertex (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t t, int i)
+{
+  const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+  std::uint32_t found = a;
+  for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
+  {
+    const Triangle& u = triangles[around.triangle[k]];
+    for (int j = 0; j < 3; ++j)
+      if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
+        found = u[(j + 2) % 3];
+  }
+  return found;
+}
+
+/** oppositeVertex() of every triangle and edge, found on all threads. */
 std::vector<std::array<std::uint32_t, 3>>
 oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround& around)
 {
   std::vector<std::array<std::uint32_t, 3>> opposite (triangles.size ());
   parallelForEach (triangles.size (), [&] (std::size_t t) {
     for (int i = 0; i < 3; ++i)
-    {
-      const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
-      opposite[t][i] = a; // none: the edge is on one triangle
-      for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
-      {
-        const Triangle& u = triangles[around.triangle[k]];
-        if (around.triangle[k] == t)
-          continue;
-        for (int j = 0; j < 3; ++j)
-          if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
-            opposite[t][i] = u[(j + 2) % 3];
-      }
-    }
+      opposite[t][i] = oppositeVertex (triangles, around, static_cast<std::uint32_t> (t), i);
   });
   return opposite;
 }
@@ -296,22 +301,10 @@ public:
   }
 
 private:
-  /** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to
-    * the next); t's vertex i where the edge is on no other. */
+  /** oppositeVertex (t, i), matched all at once or looked up now. */
   std::uint32_t opposite (std::uint32_t t, int i) const
   {
-    if (!opposite_.empty ())
-      return opposite_[t][i];
-    const std::uint32_t a = triangles_[t][i], b = triangles_[t][(i + 1) % 3];
-    std::uint32_t found = a;
-    for (std::size_t k = around_.begin[a]; k < around_.begin[a + 1]; ++k)
-    {
-      const Triangle& u = triangles_[around_.triangle[k]];
-      for (int j = 0; j < 3; ++j)
-        if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
-          found = u[(j + 2) % 3];
-    }
-    return found;
+    return opposite_.empty () ? oppositeVertex (triangles_, around_, t, i) : opposite_[t][i];
   }
 
   template <class F>
