@@ -307,6 +307,18 @@ TEST (SurfaceHandles, ABarBetweenTwoPartsIsFoundAtItsSharpSaddles)
     EXPECT_TRUE (c[0] >= 4 && c[0] <= 7 && c[1] >= 4 && c[1] <= 7 && c[2] >= 3 && c[2] <= 6)
         << c[0] << " " << c[1] << " " << c[2];
   }
+  // The angles do not change with the scale: at coordinates of 2^600 and of 2^-600 (whose
+  // differences' squares overflow and underflow) the same patches are found.
+  for (const double scale : {0x1p600, 0x1p-600})
+  {
+    std::vector<std::array<double, 3>> scaled = positions;
+    for (std::array<double, 3>& p : scaled)
+      for (double& c : p)
+        c *= scale;
+    const detail::SmallHandlePatches same = detail::smallHandlePatches (triangles, num_vertices, nullptr, &scaled);
+    EXPECT_EQ (same.centres, bar.centres) << scale;
+    EXPECT_EQ (same.vertices, bar.vertices) << scale;
+  }
   // A slab alone has no sharp saddle.
   const std::vector<Triangle> slab = voxelBoundary (12, 3, [] (int, int, int) { return true; });
   EXPECT_TRUE (detail::smallHandlePatches (slab, num_vertices, nullptr, &positions).centres.empty ());

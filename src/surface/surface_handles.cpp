@@ -94,22 +94,28 @@ sharpSaddles (const std::vector<Triangle>& triangles, const std::vector<std::arr
 {
   constexpr double UNIT = 1099511627776.0; // 2^40 units to a radian
   constexpr auto HALF_TURN = static_cast<std::int64_t> (M_PI * UNIT);
+  // Coordinates within these sizes are used as they are: the squares of the cross product's
+  // components cannot overflow, and the scaling would change no bit of a result in normal range.
+  constexpr double UNSCALED_BELOW = 0x1p200, UNSCALED_ABOVE = 0x1p-200;
   std::vector<std::int64_t> sum (look.size (), 0);
   parallelForEach (triangles.size (), [&] (std::size_t k) {
     const Triangle& t = triangles[k];
     if (!look[t[0]]) // nor its other vertices, of the same part
       return;
-    // The corners scaled by a power of two (exactly) to coordinates below 1 in size: differences
-    // of huge coordinates would overflow.
+    // Huge coordinates would overflow in the cross product's squares, tiny ones underflow: the
+    // corners are then scaled by a power of two (exactly) to coordinates below 1 in size.
     double largest = 0.0;
     for (std::uint32_t v : t)
       for (double c : positions[v])
         largest = std::max (largest, std::fabs (c));
-    const int exponent = largest > 0.0 ? std::ilogb (largest) + 1 : 0;
-    std::array<std::array<double, 3>, 3> corner;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        corner[i][j] = std::ldexp (positions[t[i]][j], -exponent);
+    std::array<std::array<double, 3>, 3> corner{positions[t[0]], positions[t[1]], positions[t[2]]};
+    if (!(largest < UNSCALED_BELOW && largest > UNSCALED_ABOVE))
+    {
+      const int exponent = largest > 0.0 ? std::ilogb (largest) + 1 : 0;
+      for (auto& p : corner)
+        for (double& c : p)
+          c = std::ldexp (c, -exponent);
+    }
     std::int64_t third = HALF_TURN; // the angles of a triangle add up to pi
     for (int i = 0; i < 2; ++i)
     {
