@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -18,6 +20,25 @@ namespace pcl_wrap::test
 {
 namespace
 {
+
+/** The edges of \a t's top simplices, as pairs of point indices (lower first), ascending. */
+std::vector<std::array<std::uint32_t, 2>>
+edgesOf (const detail::Triangulation& t)
+{
+  const auto k = static_cast<std::size_t> (t.dimension + 1);
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  for (std::size_t s = 0; k >= 2 && s + k <= t.top_simplices.size (); s += k)
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t b = a + 1; b < k; ++b)
+      {
+        const std::uint32_t p = t.point_of_vertex[t.top_simplices[s + a]],
+                            q = t.point_of_vertex[t.top_simplices[s + b]];
+        edges.push_back ({std::min (p, q), std::max (p, q)});
+      }
+  std::sort (edges.begin (), edges.end ());
+  edges.erase (std::unique (edges.begin (), edges.end ()), edges.end ());
+  return edges;
+}
 
 void
 expectGrownIsWhole (const std::vector<Point3>& points, const std::vector<double>& weights,
@@ -39,6 +60,10 @@ expectGrownIsWhole (const std::vector<Point3>& points, const std::vector<double>
     EXPECT_EQ (grown.hidden, whole.hidden);
     EXPECT_TRUE (grown.top_simplices == whole.top_simplices) << "after " << end << " points";
     EXPECT_TRUE (grown.neighbours == whole.neighbours);
+    // Its graph, read alone, is the triangulation's: each edge once.
+    std::vector<std::array<std::uint32_t, 2>> edges = growing.edges ();
+    std::sort (edges.begin (), edges.end ());
+    EXPECT_EQ (edges, edgesOf (whole)) << "after " << end << " points";
   }
 }
 
@@ -65,6 +90,21 @@ TEST (GrowingTriangulation, CosphericalGridInTwoHalves)
   std::vector<Point3> grid = gridSample (8, 8, 8);
   std::shuffle (grid.begin (), grid.end (), std::mt19937 (4));
   expectGrownIsWhole (grid, std::vector<double> (grid.size (), 1.0), {256, 512}, true);
+}
+
+TEST (GrowingTriangulation, EdgesOfAFlatGridAreItsTrianglesEdges)
+{
+  // All on one plane: the top simplices are triangles.
+  std::vector<Point3> grid = gridSample (9, 9, 1);
+  std::shuffle (grid.begin (), grid.end (), std::mt19937 (5));
+  detail::GrowingTriangulation growing (true);
+  growing.insert (grid, std::vector<double> (grid.size (), 0.0), 0);
+  const detail::Triangulation t = growing.read (grid);
+  ASSERT_EQ (t.dimension, 2);
+  std::vector<std::array<std::uint32_t, 2>> edges = growing.edges ();
+  std::sort (edges.begin (), edges.end ());
+  EXPECT_EQ (edges, edgesOf (t));
+  EXPECT_EQ (edges.size (), 8u * 9 * 2 + 8u * 8); // the grid's sides and one diagonal per square
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <utility>
 
@@ -133,26 +134,32 @@ TileSearch::nearest (const Point3& q) const
 void
 TileSearch::buildDelaunayGraph ()
 {
-  detail::GrowingTriangulation delaunay (true);
-  delaunay.insert (points_, std::vector<double> (points_.size (), 0.0), 0);
-  const detail::Triangulation t = delaunay.read (points_);
-  const int k = t.dimension + 1;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  for (std::size_t s = 0; k >= 2 && s + k <= t.top_simplices.size (); s += k)
-    for (int a = 0; a < k; ++a)
-      for (int b = 0; b < k; ++b)
-        if (a != b)
-          edges.emplace_back (t.point_of_vertex[t.top_simplices[s + a]], t.point_of_vertex[t.top_simplices[s + b]]);
-  std::sort (edges.begin (), edges.end ());
-  edges.erase (std::unique (edges.begin (), edges.end ()), edges.end ());
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  {
+    detail::GrowingTriangulation delaunay (true);
+    delaunay.insert (points_, std::vector<double> (points_.size (), 0.0), 0);
+    edges = delaunay.edges ();
+  } // freed before the graph takes its memory
   first_.assign (points_.size () + 1, 0);
-  for (const auto& e : edges)
-    ++first_[e.first + 1];
+  for (const auto& [a, b] : edges)
+  {
+    ++first_[a + 1];
+    ++first_[b + 1];
+  }
   for (std::size_t i = 0; i < points_.size (); ++i)
     first_[i + 1] += first_[i];
-  neighbours_.resize (edges.size ());
-  for (std::size_t i = 0; i < edges.size (); ++i)
-    neighbours_[i] = edges[i].second;
+  neighbours_.resize (first_.back ());
+  std::vector<std::uint32_t> next (first_.begin (), first_.end () - 1);
+  for (const auto& [a, b] : edges)
+  {
+    neighbours_[next[a]++] = b;
+    neighbours_[next[b]++] = a;
+  }
+  edges = {};
+  // Ascending, so that the walk, and so the answers, do not depend on CGAL's order.
+  tbb::parallel_for (std::size_t (0), points_.size (), [&] (std::size_t i) {
+    std::sort (neighbours_.begin () + first_[i], neighbours_.begin () + first_[i + 1]);
+  });
 }
 
 } // namespace pcl_wrap::mpi

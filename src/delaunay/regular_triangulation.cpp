@@ -306,6 +306,18 @@ public:
     return t;
   }
 
+  std::vector<std::array<std::uint32_t, 2>> edges () const override
+  {
+    std::vector<std::array<std::uint32_t, 2>> out;
+    out.reserve (rt_.number_of_finite_edges ());
+    for (auto e = rt_.finite_edges_begin (); e != rt_.finite_edges_end (); ++e)
+    {
+      const std::uint32_t a = e->first->vertex (e->second)->info (), b = e->first->vertex (e->third)->info ();
+      out.push_back ({std::min (a, b), std::max (a, b)});
+    }
+    return out;
+  }
+
 private:
   static typename Cgal::Point site (const Point3& p, double w)
   {
@@ -394,6 +406,14 @@ GrowingTriangulation::read (const std::vector<Point3>& positions) const
   if (!state_)
     return {};
   return state_->read (positions);
+}
+
+std::vector<std::array<std::uint32_t, 2>>
+GrowingTriangulation::edges () const
+{
+  if (!state_)
+    return {};
+  return state_->edges ();
 }
 
 Triangulation

@@ -73,6 +73,9 @@ public:
   void insert (const std::vector<Point3>& positions, const std::vector<double>& weights, std::size_t first);
   /** \brief The triangulation of \a positions, every one of which was inserted. */
   Triangulation read (const std::vector<Point3>& positions) const;
+  /** \brief The edges of the triangulation, each once as the indices of its points (lower first),
+    * in no set order: its graph, at a fraction of read()'s memory. */
+  std::vector<std::array<std::uint32_t, 2>> edges () const;
 
   struct State
   {
@@ -80,6 +83,7 @@ public:
     virtual void insert (const std::vector<Point3>& positions, const std::vector<double>& weights,
                          std::size_t first) = 0;
     virtual Triangulation read (const std::vector<Point3>& positions) const = 0;
+    virtual std::vector<std::array<std::uint32_t, 2>> edges () const = 0;
   };
 
 private:
