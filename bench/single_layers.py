@@ -232,10 +232,10 @@ def main():
             subprocess.run([args.cli, path, mesh, "--quiet"] + option, check=True)
             seconds = time.perf_counter() - start
             vertices, triangles = read_obj(mesh)
-            # The output's vertices are the input's rows (NaN rows included), copies after them.
-            d = describe(vertices, triangles, len(points))
-            d["share"] = len(np.unique(triangles[triangles < len(points)])) / n
-            d["copied"] = len(vertices) - len(points)
+            # The output's vertices are the input's finite rows, in order, copies after them.
+            d = describe(vertices, triangles, n)
+            d["share"] = len(np.unique(triangles[triangles < n])) / n
+            d["copied"] = len(vertices) - n
             rows.append(f"| {name} | {n:,} | {'closed' if option else 'default'} | "
                         f"{'yes' if d['manifold'] else 'no'} | {'yes' if d['open'] else 'no'} | "
                         f"{'yes' if d['oriented'] else 'no'} | "

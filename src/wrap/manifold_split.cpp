@@ -92,13 +92,23 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
   * joined there, and a sheet continues through the edge with one face per side. \a choice 1
   * glues each face to the one across X instead (the parts come apart, a sheet folds back on
   * itself), and higher choices every other way to glue them without crossing. */
+/** glueAroundEdge()'s lists, reused from edge to edge. */
+struct AroundEdge
+{
+  std::vector<Step> steps;
+  std::vector<SimplexId> triangle;    // around the edge, in rotation order
+  std::vector<std::uint8_t> gap_in_x; // the tetrahedron after each triangle (omega: not in X)
+  std::vector<std::uint32_t> around;  // the faces, in rotation order
+};
+
 template <class Glue>
 void
 glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
                 const std::vector<SimplexId>& tets, const std::vector<std::uint32_t>& faces_here,
-                const std::vector<Face>& faces, unsigned choice, const Glue& glue)
+                const std::vector<Face>& faces, unsigned choice, const Glue& glue, AroundEdge& scratch)
 {
-  std::vector<Step> steps;
+  std::vector<Step>& steps = scratch.steps;
+  steps.clear ();
   for (SimplexId t : tets)
   {
     const std::uint32_t* v = complex.vertices (3, t);
@@ -117,8 +127,10 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
   for (std::size_t i = 0; i < steps.size (); ++i)
     if (std::none_of (steps.begin (), steps.end (), [&] (const Step& s) { return s.d == steps[i].c; }))
       start = i;
-  std::vector<SimplexId> triangle;    // around the edge, in rotation order
-  std::vector<std::uint8_t> gap_in_x; // the tetrahedron after each triangle (omega: not in X)
+  std::vector<SimplexId>& triangle = scratch.triangle;
+  std::vector<std::uint8_t>& gap_in_x = scratch.gap_in_x;
+  triangle.clear ();
+  gap_in_x.clear ();
   for (std::size_t i = start, n = 0; n < steps.size (); ++n)
   {
     triangle.push_back (steps[i].triangle_c);
@@ -142,7 +154,8 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
     throw std::logic_error ("splitPinches: no face where the rotation around an edge expects one");
   };
   const std::size_t m = triangle.size ();
-  std::vector<std::uint32_t> around;
+  std::vector<std::uint32_t>& around = scratch.around;
+  around.clear ();
   for (std::size_t i = 0; i < m; ++i)
     if (x.contains ({2, triangle[i]}))
     {
@@ -157,6 +170,16 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
   if (!around.empty () && !traverses (faces[around[0]], b, a))
     std::rotate (around.begin (), around.begin () + 1, around.end ());
   const int k2 = static_cast<int> (around.size ());
+  if (choice < 2)
+  {
+    // Across the outside (i + 1, i + 2) or across X (i, i + 1), as the pairings below list them.
+    for (int i = 0; i < k2; i += 2)
+      if (choice == 0)
+        glue (around[i + 1], around[(i + 2) % k2]);
+      else
+        glue (around[i], around[i + 1]);
+    return;
+  }
   std::vector<std::pair<int, int>> across_outside, across_x;
   for (int i = 0; i < k2; i += 2)
   {
@@ -164,26 +187,33 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
     across_outside.emplace_back (i + 1, (i + 2) % k2);
   }
   std::vector<std::vector<std::pair<int, int>>> choices = {across_outside, across_x};
-  if (choice >= 2)
-  {
-    std::vector<int> open (k2);
-    std::iota (open.begin (), open.end (), 0);
-    std::vector<std::pair<int, int>> pairs;
-    nonCrossingMatchings (open, pairs, choices, 64);
-  }
+  std::vector<int> open (k2);
+  std::iota (open.begin (), open.end (), 0);
+  std::vector<std::pair<int, int>> pairs;
+  nonCrossingMatchings (open, pairs, choices, 64);
   for (const auto& [i, j] : choices[choice % choices.size ()])
     glue (around[i], around[j]);
 }
 
-/** W's faces (a sheet triangle once per side) glued along every edge, then one vertex per fan.
-  * Each pinch edge (listed in \a pinch_keys in ascending order) is glued the way \a choice says
-  * (see glueAroundEdge). */
-ManifoldSplit
-split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
-       const std::vector<unsigned>& choice, std::vector<std::uint64_t>& pinch_keys)
+/** What split() reads that does not depend on the choices: W's faces (a sheet triangle once per
+  * side), their uses of each undirected edge, and the pinch edges (more than two faces), with the
+  * tetrahedra around each of a 3-dimensional complex. */
+struct Faces
 {
-  ManifoldSplit out;
   std::vector<Face> faces;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> uses; // (edge key, face), ascending
+  std::vector<std::pair<std::size_t, std::size_t>> manifold; // [lo, hi) of uses: an edge of two faces
+  std::vector<std::pair<std::size_t, std::size_t>> pinches;  // [lo, hi) of uses, in ascending key order
+  std::vector<std::uint64_t> pinch_keys;                     // ascending
+  std::vector<std::vector<SimplexId>> tets_around;           // per pinch edge, in a 3-dimensional complex
+  std::size_t sheet_triangles = 0;
+};
+
+Faces
+facesOf (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w)
+{
+  Faces out;
+  std::vector<Face>& faces = out.faces;
   for (std::size_t i = 0; i < w.triangles.size (); ++i)
   {
     faces.push_back ({w.triangles[i], w.triangle_ids[i], false});
@@ -195,24 +225,14 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
   }
 
   // Faces by undirected edge.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> uses;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>>& uses = out.uses;
   for (std::uint32_t f = 0; f < faces.size (); ++f)
     for (int i = 0; i < 3; ++i)
       uses.emplace_back (edgeKey (faces[f].v[i], faces[f].v[(i + 1) % 3]), f);
   std::sort (uses.begin (), uses.end ());
 
-  UnionFind corners (3 * faces.size ()); // three per face: glued corners are one vertex
-  const auto glueAlong = [&] (std::uint32_t a, std::uint32_t b) {
-    return [&, a, b] (std::uint32_t f, std::uint32_t g) {
-      for (std::uint32_t v : {a, b})
-        corners.attach (3 * f + cornerOf (faces[f], v), 3 * g + cornerOf (faces[g], v));
-    };
-  };
-  const auto choiceOf = [&] (std::size_t p) { return p < choice.size () ? choice[p] : 0u; };
-  // Pinch edges (more than two faces) of a 3-dimensional complex need the tetrahedra around
-  // them: one scan collects them.
-  std::vector<std::uint32_t> pinch_slot (complex.size (1), NONE);
-  std::vector<std::pair<std::size_t, std::size_t>> pinch_groups;
+  // Pinch edges of a 3-dimensional complex need the tetrahedra around them: one scan collects them.
+  std::vector<std::uint32_t> pinch_slot (complex.dimension () < 3 ? 0 : complex.size (1), NONE);
   for (std::size_t lo = 0, hi; lo < uses.size (); lo = hi)
   {
     for (hi = lo; hi < uses.size () && uses[hi].first == uses[lo].first; ++hi)
@@ -223,16 +243,65 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
       throw std::logic_error ("splitPinches: W is not closed at an edge");
     if (hi - lo == 2)
     {
-      glueAlong (a, b) (f, g);
+      out.manifold.emplace_back (lo, hi);
       continue;
     }
-    const std::size_t p = pinch_keys.size ();
-    pinch_keys.push_back (uses[lo].first);
+    if (complex.dimension () == 3)
+    {
+      const std::uint32_t* t = complex.vertices (2, faces[f].triangle);
+      const unsigned mask =
+          (t[0] == a || t[0] == b ? 1u : 0u) | (t[1] == a || t[1] == b ? 2u : 0u) | (t[2] == a || t[2] == b ? 4u : 0u);
+      pinch_slot[complex.face (2, faces[f].triangle, mask).id] = static_cast<std::uint32_t> (out.pinches.size ());
+    }
+    out.pinch_keys.push_back (uses[lo].first);
+    out.pinches.emplace_back (lo, hi);
+  }
+  if (complex.dimension () == 3 && !out.pinches.empty ())
+  {
+    out.tets_around.resize (out.pinches.size ());
+    for (SimplexId t = 0; t < complex.size (3); ++t)
+      for (unsigned mask : {3u, 5u, 6u, 9u, 10u, 12u})
+      {
+        const std::uint32_t slot = pinch_slot[complex.face (3, t, mask).id];
+        if (slot != NONE)
+          out.tets_around[slot].push_back (t);
+      }
+  }
+  return out;
+}
+
+/** The faces \a in glued along every edge, each pinch edge the way \a choice says (see
+  * glueAroundEdge), then one vertex per fan. */
+ManifoldSplit
+split (const SimplicialComplex& complex, const Subcomplex& x, const Faces& in, const std::vector<unsigned>& choice)
+{
+  ManifoldSplit out;
+  const std::vector<Face>& faces = in.faces;
+  const auto& uses = in.uses;
+  out.sheet_triangles = in.sheet_triangles;
+  out.pinch_edges = in.pinches.size ();
+  UnionFind corners (3 * faces.size ()); // three per face: glued corners are one vertex
+  const auto glueAlong = [&] (std::uint32_t a, std::uint32_t b) {
+    return [&, a, b] (std::uint32_t f, std::uint32_t g) {
+      for (std::uint32_t v : {a, b})
+        corners.attach (3 * f + cornerOf (faces[f], v), 3 * g + cornerOf (faces[g], v));
+    };
+  };
+  for (const auto& [lo, hi] : in.manifold)
+    glueAlong (std::uint32_t (uses[lo].first >> 32), std::uint32_t (uses[lo].first)) (uses[lo].second,
+                                                                                      uses[lo + 1].second);
+  std::vector<std::uint32_t> here;
+  AroundEdge scratch;
+  for (std::size_t p = 0; p < in.pinches.size (); ++p)
+  {
+    const auto [lo, hi] = in.pinches[p];
+    const std::uint32_t a = std::uint32_t (uses[lo].first >> 32), b = std::uint32_t (uses[lo].first);
+    const unsigned choice_here = p < choice.size () ? choice[p] : 0u;
     if (complex.dimension () < 3)
     {
       // Flat: every triangle is a sheet. Glue each side's two faces, so the sheet continues with
       // a top and a bottom; or fold each triangle back on itself.
-      const bool fold = choiceOf (p) % 2 == 1;
+      const bool fold = choice_here % 2 == 1;
       for (std::size_t k1 = lo; k1 < hi; ++k1)
         for (std::size_t k2 = k1 + 1; k2 < hi; ++k2)
         {
@@ -242,33 +311,10 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& w,
         }
       continue;
     }
-    const std::uint32_t* t = complex.vertices (2, faces[f].triangle);
-    const unsigned mask = (t[0] == a || t[0] == b ? 1u : 0u) | (t[1] == a || t[1] == b ? 2u : 0u) |
-                          (t[2] == a || t[2] == b ? 4u : 0u);
-    pinch_slot[complex.face (2, faces[f].triangle, mask).id] = static_cast<std::uint32_t> (pinch_groups.size ());
-    pinch_groups.emplace_back (lo, hi);
-  }
-  out.pinch_edges = pinch_keys.size ();
-  if (!pinch_groups.empty ())
-  {
-    std::vector<std::vector<SimplexId>> tets_around (pinch_groups.size ());
-    for (SimplexId t = 0; t < complex.size (3); ++t)
-      for (unsigned mask : {3u, 5u, 6u, 9u, 10u, 12u})
-      {
-        const std::uint32_t slot = pinch_slot[complex.face (3, t, mask).id];
-        if (slot != NONE)
-          tets_around[slot].push_back (t);
-      }
-    for (std::size_t p = 0; p < pinch_groups.size (); ++p)
-    {
-      // In a 3-dimensional complex every pinch edge is one of pinch_groups, in the same order.
-      const auto [lo, hi] = pinch_groups[p];
-      const std::uint32_t a = std::uint32_t (uses[lo].first >> 32), b = std::uint32_t (uses[lo].first);
-      std::vector<std::uint32_t> here;
-      for (std::size_t k = lo; k < hi; ++k)
-        here.push_back (uses[k].second);
-      glueAroundEdge (complex, x, a, b, tets_around[p], here, faces, choiceOf (p), glueAlong (a, b));
-    }
+    here.clear ();
+    for (std::size_t k = lo; k < hi; ++k)
+      here.push_back (uses[k].second);
+    glueAroundEdge (complex, x, a, b, in.tets_around[p], here, faces, choice_here, glueAlong (a, b), scratch);
   }
 
   // One vertex per fan: the first fan met keeps the vertex, every other gets a copy.
@@ -338,12 +384,12 @@ splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Bound
   // Where several pinch edges meet at a vertex, their gluings interact, and an edge with more
   // than four faces has more ways to be glued: an edge still bad tries its next way. A few
   // rounds settle every input tried; the bound guards against cycling.
-  std::vector<unsigned> choice;
+  const Faces faces = facesOf (complex, x, w); // the same in every round
+  const std::vector<std::uint64_t>& pinch_keys = faces.pinch_keys;
+  std::vector<unsigned> choice (pinch_keys.size (), 0);
   for (int round = 0; round < 64; ++round)
   {
-    std::vector<std::uint64_t> pinch_keys;
-    ManifoldSplit out = split (complex, x, w, choice, pinch_keys);
-    choice.resize (pinch_keys.size (), 0);
+    ManifoldSplit out = split (complex, x, faces, choice);
     const std::vector<std::uint64_t> bad = nonManifoldEdges (out.triangles);
     if (bad.empty ())
       return out;
