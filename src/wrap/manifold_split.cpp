@@ -5,6 +5,7 @@
 #include "util/union_find.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -60,6 +61,13 @@ struct Step
   SimplexId tet, triangle_c, triangle_d;
 };
 
+/** The two vertices of the edge with key \a key (edgeKey()), lower first. */
+std::array<std::uint32_t, 2>
+edgeEnds (std::uint64_t key)
+{
+  return {std::uint32_t (key >> 32), std::uint32_t (key)};
+}
+
 /** Every non-crossing perfect matching of 2k points on a circle (k >= 1), at most \a cap of them:
   * each pairs points an odd distance apart. */
 void
@@ -86,12 +94,6 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
   }
 }
 
-/** Glues the faces on the pinch edge (a, b) (a < b) pairwise, in the rotation order of the
-  * tetrahedra of Del S around it (docs/design.md §8). First each face is glued to the one across
-  * the outside, as on the boundary of a thickened X: parts of X that touch along the edge stay
-  * joined there, and a sheet continues through the edge with one face per side. \a choice 1
-  * glues each face to the one across X instead (the parts come apart, a sheet folds back on
-  * itself), and higher choices every other way to glue them without crossing. */
 /** glueAroundEdge()'s lists, reused from edge to edge. */
 struct AroundEdge
 {
@@ -101,6 +103,12 @@ struct AroundEdge
   std::vector<std::uint32_t> around;  // the faces, in rotation order
 };
 
+/** Glues the faces on the pinch edge (a, b) (a < b) pairwise, in the rotation order of the
+  * tetrahedra of Del S around it (docs/design.md §8). First each face is glued to the one across
+  * the outside, as on the boundary of a thickened X: parts of X that touch along the edge stay
+  * joined there, and a sheet continues through the edge with one face per side. \a choice 1
+  * glues each face to the one across X instead (the parts come apart, a sheet folds back on
+  * itself), and higher choices every other way to glue them without crossing. */
 template <class Glue>
 void
 glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
@@ -170,21 +178,24 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
   if (!around.empty () && !traverses (faces[around[0]], b, a))
     std::rotate (around.begin (), around.begin () + 1, around.end ());
   const int k2 = static_cast<int> (around.size ());
-  if (choice < 2)
+  // The pair from face i (even) across X, or from face i + 1 across the outside.
+  const auto pairAt = [k2] (int i, bool across_x) {
+    return across_x ? std::pair<int, int> (i, i + 1) : std::pair<int, int> (i + 1, (i + 2) % k2);
+  };
+  if (choice < 2) // glued at once, without listing every pairing
   {
-    // Across the outside (i + 1, i + 2) or across X (i, i + 1), as the pairings below list them.
     for (int i = 0; i < k2; i += 2)
-      if (choice == 0)
-        glue (around[i + 1], around[(i + 2) % k2]);
-      else
-        glue (around[i], around[i + 1]);
+    {
+      const auto [f, g] = pairAt (i, choice == 1);
+      glue (around[f], around[g]);
+    }
     return;
   }
   std::vector<std::pair<int, int>> across_outside, across_x;
   for (int i = 0; i < k2; i += 2)
   {
-    across_x.emplace_back (i, i + 1);
-    across_outside.emplace_back (i + 1, (i + 2) % k2);
+    across_x.push_back (pairAt (i, true));
+    across_outside.push_back (pairAt (i, false));
   }
   std::vector<std::vector<std::pair<int, int>>> choices = {across_outside, across_x};
   std::vector<int> open (k2);
@@ -202,9 +213,8 @@ struct Faces
 {
   std::vector<Face> faces;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> uses; // (edge key, face), ascending
-  std::vector<std::pair<std::size_t, std::size_t>> manifold; // [lo, hi) of uses: an edge of two faces
+  std::vector<std::size_t> manifold;                         // the first of an edge's two uses
   std::vector<std::pair<std::size_t, std::size_t>> pinches;  // [lo, hi) of uses, in ascending key order
-  std::vector<std::uint64_t> pinch_keys;                     // ascending
   std::vector<std::vector<SimplexId>> tets_around;           // per pinch edge, in a 3-dimensional complex
   std::size_t sheet_triangles = 0;
 };
@@ -237,13 +247,13 @@ facesOf (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& 
   {
     for (hi = lo; hi < uses.size () && uses[hi].first == uses[lo].first; ++hi)
       ;
-    const std::uint32_t a = std::uint32_t (uses[lo].first >> 32), b = std::uint32_t (uses[lo].first);
+    const auto [a, b] = edgeEnds (uses[lo].first);
     const std::uint32_t f = uses[lo].second, g = uses[lo + 1 < hi ? lo + 1 : lo].second;
     if ((hi - lo) % 2 != 0 || (hi - lo == 2 && traverses (faces[f], a, b) == traverses (faces[g], a, b)))
       throw std::logic_error ("splitPinches: W is not closed at an edge");
     if (hi - lo == 2)
     {
-      out.manifold.emplace_back (lo, hi);
+      out.manifold.push_back (lo);
       continue;
     }
     if (complex.dimension () == 3)
@@ -253,7 +263,6 @@ facesOf (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& 
           (t[0] == a || t[0] == b ? 1u : 0u) | (t[1] == a || t[1] == b ? 2u : 0u) | (t[2] == a || t[2] == b ? 4u : 0u);
       pinch_slot[complex.face (2, faces[f].triangle, mask).id] = static_cast<std::uint32_t> (out.pinches.size ());
     }
-    out.pinch_keys.push_back (uses[lo].first);
     out.pinches.emplace_back (lo, hi);
   }
   if (complex.dimension () == 3 && !out.pinches.empty ())
@@ -287,16 +296,18 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Faces& in, c
         corners.attach (3 * f + cornerOf (faces[f], v), 3 * g + cornerOf (faces[g], v));
     };
   };
-  for (const auto& [lo, hi] : in.manifold)
-    glueAlong (std::uint32_t (uses[lo].first >> 32), std::uint32_t (uses[lo].first)) (uses[lo].second,
-                                                                                      uses[lo + 1].second);
+  for (std::size_t lo : in.manifold)
+  {
+    const auto [a, b] = edgeEnds (uses[lo].first);
+    glueAlong (a, b) (uses[lo].second, uses[lo + 1].second);
+  }
   std::vector<std::uint32_t> here;
   AroundEdge scratch;
   for (std::size_t p = 0; p < in.pinches.size (); ++p)
   {
     const auto [lo, hi] = in.pinches[p];
-    const std::uint32_t a = std::uint32_t (uses[lo].first >> 32), b = std::uint32_t (uses[lo].first);
-    const unsigned choice_here = p < choice.size () ? choice[p] : 0u;
+    const auto [a, b] = edgeEnds (uses[lo].first);
+    const unsigned choice_here = choice[p];
     if (complex.dimension () < 3)
     {
       // Flat: every triangle is a sheet. Glue each side's two faces, so the sheet continues with
@@ -385,8 +396,7 @@ splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Bound
   // than four faces has more ways to be glued: an edge still bad tries its next way. A few
   // rounds settle every input tried; the bound guards against cycling.
   const Faces faces = facesOf (complex, x, w); // the same in every round
-  const std::vector<std::uint64_t>& pinch_keys = faces.pinch_keys;
-  std::vector<unsigned> choice (pinch_keys.size (), 0);
+  std::vector<unsigned> choice (faces.pinches.size (), 0);
   for (int round = 0; round < 64; ++round)
   {
     ManifoldSplit out = split (complex, x, faces, choice);
@@ -398,11 +408,16 @@ splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Bound
     std::vector<std::size_t> to_change;
     for (std::uint64_t e : bad)
     {
-      const std::uint64_t key = edgeKey (original (std::uint32_t (e >> 32)), original (std::uint32_t (e)));
-      const auto it = std::lower_bound (pinch_keys.begin (), pinch_keys.end (), key);
-      if (it == pinch_keys.end () || *it != key)
+      const auto [u, v] = edgeEnds (e);
+      const std::uint64_t key = edgeKey (original (u), original (v));
+      const auto keyOf = [&] (const std::pair<std::size_t, std::size_t>& pinch) {
+        return faces.uses[pinch.first].first;
+      };
+      const auto it = std::lower_bound (faces.pinches.begin (), faces.pinches.end (), key,
+                                        [&] (const auto& pinch, std::uint64_t k) { return keyOf (pinch) < k; });
+      if (it == faces.pinches.end () || keyOf (*it) != key)
         throw std::logic_error ("splitPinches: a non-manifold edge that is not a pinch edge");
-      to_change.push_back (static_cast<std::size_t> (it - pinch_keys.begin ()));
+      to_change.push_back (static_cast<std::size_t> (it - faces.pinches.begin ()));
     }
     std::sort (to_change.begin (), to_change.end ());
     to_change.erase (std::unique (to_change.begin (), to_change.end ()), to_change.end ());
