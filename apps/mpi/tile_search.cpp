@@ -4,6 +4,7 @@
 
 #include "delaunay/cgal_kernel.h"
 #include "delaunay/regular_triangulation.h"
+#include "util/parallel_for_each.h"
 
 #include <tbb/parallel_for.h>
 
@@ -121,7 +122,7 @@ TileSearch::nearest (const Point3& q) const
   for (bool moved = true; moved;)
   {
     moved = false;
-    for (std::uint32_t k = first_[best]; k < first_[best + 1] && !moved; ++k)
+    for (std::size_t k = first_[best]; k < first_[best + 1] && !moved; ++k)
       if (CGAL::compare_distance_to_point (target, bare (neighbours_[k]), bare (best)) == CGAL::SMALLER)
       {
         best = neighbours_[k];
@@ -140,26 +141,15 @@ TileSearch::buildDelaunayGraph ()
     delaunay.insert (points_, std::vector<double> (points_.size (), 0.0), 0);
     edges = delaunay.edges ();
   } // freed before the graph takes its memory
-  first_.assign (points_.size () + 1, 0);
-  for (const auto& [a, b] : edges)
-  {
-    ++first_[a + 1];
-    ++first_[b + 1];
-  }
-  for (std::size_t i = 0; i < points_.size (); ++i)
-    first_[i + 1] += first_[i];
-  neighbours_.resize (first_.back ());
-  std::vector<std::uint32_t> next (first_.begin (), first_.end () - 1);
-  for (const auto& [a, b] : edges)
-  {
-    neighbours_[next[a]++] = b;
-    neighbours_[next[b]++] = a;
-  }
-  edges = {};
-  // Ascending, so that the walk, and so the answers, do not depend on CGAL's order.
-  tbb::parallel_for (std::size_t (0), points_.size (), [&] (std::size_t i) {
-    std::sort (neighbours_.begin () + first_[i], neighbours_.begin () + first_[i + 1]);
-  });
+  // Each edge in the lists of both its points, each list ascending, so that the walk, and so the
+  // answers, do not depend on CGAL's order.
+  neighbours_ = detail::bucketInParallel<std::uint32_t> (
+      edges.size (), points_.size (),
+      [&] (std::size_t e, auto put) {
+        put (edges[e][0], edges[e][1]);
+        put (edges[e][1], edges[e][0]);
+      },
+      first_, [] (std::size_t, auto first, auto last) { std::sort (first, last); });
 }
 
 } // namespace pcl_wrap::mpi

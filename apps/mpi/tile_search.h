@@ -4,6 +4,8 @@
 
 #include "tile_reach.h"
 
+#include "util/filled_in_parallel.h"
+
 #include <pcl_wrap/compute_wrap.h>
 
 #include <cstdint>
@@ -56,7 +58,8 @@ private:
   std::vector<Point3> points_;
   std::vector<Node> nodes_;
   // The Delaunay graph, compressed: the neighbours of point i are neighbours_[first_[i], first_[i + 1]).
-  std::vector<std::uint32_t> first_, neighbours_;
+  std::vector<std::size_t> first_;
+  detail::FilledInParallel<std::uint32_t> neighbours_;
   std::size_t by_nearest_ = 0;
 };
 
