@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Extracts sample data from Debian's libcgal-demo package into data/fetched/:
-# the Stanford bunny (a mesh whose vertices are a scan), the kitten scan, the fandisk CAD model and
-# the cow.
+# the Stanford bunny (a mesh whose vertices are a scan), the kitten scan, the fandisk CAD model, the
+# cow and the man (a figure whose hands hang close to its body).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 archive=/usr/share/doc/libcgal-dev/data.tar.gz
 [ -f "$archive" ] || { echo "fetch-data: $archive missing: run scripts/setup.sh" >&2; exit 1; }
 mkdir -p data/fetched
-for f in data/meshes/bunny00.off data/points_3/kitten.xyz data/meshes/fandisk.off data/meshes/cow.off; do
+for f in data/meshes/bunny00.off data/points_3/kitten.xyz data/meshes/fandisk.off data/meshes/cow.off \
+  data/meshes/man.off; do
   [ -f "data/fetched/$(basename "$f")" ] || tar -xzf "$archive" -O "$f" > "data/fetched/$(basename "$f")"
 done
 # The bunny's points alone as a PLY file, for examples/python/wrap_bunny.py.

@@ -20,7 +20,6 @@ sys.path.insert(0, os.path.join(here, "..", "bench"))
 import corpus_table  # noqa: E402
 
 STILL_WRONG = {
-    "thin_walled_cup",  # a wall 1.3 spacings thick: holes through it
     "four_thin_cylinders",  # webs across gaps of 2-3 spacings at the caps
 }
 

@@ -234,6 +234,22 @@ TEST (CleanSurface, BoresThroughAPlateStayOpen)
   expectCleanSurface (plateWithBores (12000, 23), 1, 5);
 }
 
+TEST (CleanSurface, AHandCloseToTheBodyIsNotFusedToIt)
+{
+  // The man's hand hangs a few spacings from his hip. The search for tunnels too long for a small
+  // handle's patch, from sharp saddles, finds none between them: around every vertex, it would
+  // fill the gap, and take 184 of the hand's and the hip's points inside (1% of them).
+  const auto points = load ("man.off");
+  const WrapResult r = computeWrap (points);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_EQ (s.components, 1u);
+  std::set<PointIndex> on;
+  for (const auto& t : r.surface.triangles)
+    on.insert (t.begin (), t.end ());
+  EXPECT_GE (on.size () * 100, points.size () * 98) << on.size () << " of " << points.size () << " points on it";
+}
+
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
 {
   const auto points = load ("kitten.xyz");

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdlib>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -88,14 +89,16 @@ voxelCorner (std::uint32_t id, int size)
   return {static_cast<int> (id % n), static_cast<int> (id / n % n), static_cast<int> (id / (n * n))};
 }
 
-/** The boundary of a plate of \a size x \a size x \a thickness unit voxels with a square hole of
-  * \a hole x \a hole voxels through its middle. */
+/** The boundary of a plate of \a size x \a size x \a thickness unit voxels with a hole of \a hole
+  * x \a length voxels (square by default) through its middle. */
 std::vector<Triangle>
-plateWithHole (int size, int thickness, int hole)
+plateWithHole (int size, int thickness, int hole, int length = 0)
 {
-  const int lo = (size - hole) / 2;
-  return voxelBoundary (size, thickness,
-                        [&] (int x, int y, int) { return !(x >= lo && x < lo + hole && y >= lo && y < lo + hole); });
+  length = length > 0 ? length : hole;
+  const int lo = (size - hole) / 2, low = (size - length) / 2;
+  return voxelBoundary (size, thickness, [&] (int x, int y, int) {
+    return !(x >= lo && x < lo + hole && y >= low && y < low + length);
+  });
 }
 
 /** An octahedron: a sphere, genus 0. */
@@ -224,6 +227,59 @@ TEST (SurfaceHandles, TunnelThroughAWallIsFound)
                                      plate.vertices.begin () + plate.begin[i + 1], plate.centres[i]));
   }
   EXPECT_TRUE (detail::smallHandlePatches (plateWithHole (size, thickness, 6), num_vertices).centres.empty ());
+}
+
+/** The corners of voxelBoundary (size, ...) where they are, but for those half way through a plate
+  * two thick on the walls x = \a x0 and x = \a x1 of a hole, moved \a bulge away from its middle:
+  * the hole's corners on the plate's faces are then sharp saddles, as where a hole through a
+  * sampled wall meets its faces. */
+std::vector<std::array<double, 3>>
+bulgingHolePositions (int size, int x0, int x1, double bulge)
+{
+  std::vector<std::array<double, 3>> positions (static_cast<std::size_t> ((size + 1) * (size + 1) * 3));
+  for (std::uint32_t v = 0; v < positions.size (); ++v)
+  {
+    const std::array<int, 3> c = voxelCorner (v, size);
+    positions[v] = {double (c[0]), double (c[1]), double (c[2])};
+    if (c[2] == 1 && (c[0] == x0 || c[0] == x1))
+      positions[v][0] += c[0] == x0 ? -bulge : bulge;
+  }
+  return positions;
+}
+
+TEST (SurfaceHandles, ASlitThroughAWallIsFoundInWiderPatches)
+{
+  // A slit one voxel wide and five long through a plate two thick: a patch of HANDLE_RINGS rings
+  // does not go round it, one of WIDE_TUNNEL_RINGS around a sharp saddle at its corners does.
+  // Holes ten voxels wide are real ones.
+  const int size = 40;
+  const auto num_vertices = static_cast<std::uint32_t> ((size + 1) * (size + 1) * 3);
+  const std::vector<Triangle> slit = plateWithHole (size, 2, 1, 5);
+  const std::vector<std::array<double, 3>> positions = bulgingHolePositions (size, 19, 20, 0.3);
+  EXPECT_TRUE (detail::smallHandlePatches (slit, num_vertices, nullptr, &positions).centres.empty ());
+  const detail::SmallHandlePatches wide = detail::wideTunnelPatches (slit, num_vertices, positions);
+  ASSERT_FALSE (wide.centres.empty ());
+  for (std::size_t i = 0; i < wide.centres.size (); ++i)
+  {
+    EXPECT_TRUE (wide.tunnel[i]);
+    // On the slit's wall, whose corners have x 19 or 20 and y 17 to 22.
+    const std::array<int, 3> c = voxelCorner (wide.centres[i], size);
+    EXPECT_TRUE ((c[0] == 19 || c[0] == 20) && c[1] >= 17 && c[1] <= 22) << c[0] << " " << c[1] << " " << c[2];
+  }
+  // On a plate as rough as it is thick, sharp saddles are common and mark no tube: nothing is
+  // looked at.
+  std::vector<std::array<double, 3>> noisy = positions;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+    noisy[v][2] += 2.0 * ((v * 2654435761u) % 1024 / 1024.0 - 0.5);
+  EXPECT_TRUE (detail::wideTunnelPatches (slit, num_vertices, noisy).centres.empty ());
+  for (const auto& [hole, length] : {std::pair{10, 10}, {6, 16}})
+  {
+    const int x0 = (size - hole) / 2;
+    EXPECT_TRUE (detail::wideTunnelPatches (plateWithHole (size, 2, hole, length), num_vertices,
+                                            bulgingHolePositions (size, x0, x0 + hole, 0.3))
+                     .centres.empty ())
+        << hole << " x " << length;
+  }
 }
 
 TEST (SurfaceHandles, TunnelLevelsRunFromOneFaceToTheOther)

@@ -137,7 +137,9 @@ public:
     if (stays_buried_.empty ())      // not a volume, whose solid is X's
     {
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-      std::vector<std::uint32_t> cut = cutSmallHandles (surface->triangles, positions, nullptr);
+      std::vector<std::uint32_t> cut =
+          cutSmallHandles (smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions),
+                           positions);
       for (int pass = 1; !cut.empty (); ++pass)
       {
         surface.reset ();
@@ -151,7 +153,19 @@ public:
         joined.clear ();
         const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
         surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-        cut = cutSmallHandles (surface->triangles, positions, &near);
+        cut = cutSmallHandles (smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions),
+                               positions);
+      }
+      if (surface)
+      {
+        // No small handle is left to cut: the tunnels too long for a small handle's patch (a slit
+        // through a thin wall) are looked for once more, in wider patches.
+        cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions), positions);
+        if (!cut.empty ())
+        {
+          surface.reset ();
+          joined.insert (joined.end (), cut.begin (), cut.end ());
+        }
       }
     }
     done.flipped += joined.size ();
@@ -195,27 +209,24 @@ private:
     }
   };
 
-  /** Cuts the small handles of the solid's \a surface (smallHandlePatches()). The candidates are
-    * the connected parts (on one side) of the stars of the vertices near one and of their stars'
-    * vertices whose move would change the solid's Euler characteristic by +1, then the plugs of
-    * the patches near one (handlePlugs()), found on all threads. Weakest first, star parts before
-    * plugs, a candidate changes side, with the pockets it would enclose and the parts it would
-    * leave pinched (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its
-    * side stay connected (within HANDLE_REACH tetrahedra from each), and the surface stays a
-    * 2-manifold at its vertices. Such a move neither splits a part off nor opens or closes a void,
+  /** Cuts the small handles of the solid's surface near which \a patches lie
+    * (smallHandlePatches(), wideTunnelPatches()). The candidates are the connected parts (on one
+    * side) of the stars of the vertices near one and of their stars' vertices whose move would
+    * change the solid's Euler characteristic by +1, then the plugs of the patches near one
+    * (handlePlugs()), found on all threads. Weakest first, star parts before plugs, a candidate
+    * changes side, with the pockets it would enclose and the parts it would leave pinched
+    * (closedMove()), if that still changes it by +1, the tetrahedra it leaves on its side stay
+    * connected (within HANDLE_REACH tetrahedra from each), and the surface stays a 2-manifold at
+    * its vertices. Such a move neither splits a part off nor opens or closes a void,
     * so it takes one handle away and makes none: there are at most as many moves as handles.
     * A web, a slice of the solid across a tunnel's waist (handlePlugs()), may instead split the
     * solid into parts each larger than the search's reach (a bridge between two objects, which
     * also raises the Euler characteristic by 1), if the edges it leaves on no tetrahedron of the
     * solid each join points a gap apart that the sampling resolves (seversResolvedGapsOnly()): a
     * tube of the solid across a gap no points sample, where a thin wire the points sample stays.
-    * With \a near, only the handles near its vertices (smallHandlePatches()). Returns the
-    * tetrahedra moved. */
-  std::vector<std::uint32_t> cutSmallHandles (const std::vector<std::array<std::uint32_t, 3>>& surface,
-                                              const std::vector<Point3>& positions,
-                                              const std::vector<std::uint32_t>* near)
+    * Returns the tetrahedra moved. */
+  std::vector<std::uint32_t> cutSmallHandles (const SmallHandlePatches& patches, const std::vector<Point3>& positions)
   {
-    const SmallHandlePatches patches = smallHandlePatches (surface, complex_.numVertices (), near, &positions);
     std::vector<std::uint32_t> moved;
     if (patches.centres.empty ())
       return moved;

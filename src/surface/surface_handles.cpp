@@ -159,14 +159,15 @@ class HandleFinder
 public:
   /** With \a match_edges, the edges' opposite vertices are found first, all at once, for a search
     * of a whole part; otherwise as a patch needs them. */
-  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, bool match_edges)
+  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, bool match_edges, int rings)
     : triangles_ (triangles),
       around_ (triangles, n),
       opposite_ (match_edges ? oppositeVertices (triangles, around_) : std::vector<std::array<std::uint32_t, 3>>{}),
-      n_ (n)
+      n_ (n),
+      rings_ (rings)
   {}
 
-  /** Does the patch of HANDLE_RINGS rings around \a v hold a handle or go round a handle's tube?
+  /** Does the patch of rings_ rings around \a v hold a handle or go round a handle's tube?
     * A tube whose ends the surface joins only far away is a tunnel when the surface opens out
     * past both of them: a hole through a wall that the points do not resolve, or a web across a
     * gap between two walls (a solid tube, which may also be a thin wire the points do show). */
@@ -182,7 +183,7 @@ public:
     s.vertices.assign (1, v);
     s.in_patch[v] = stamp;
     s.front.assign (1, v);
-    for (int ring = 0; ring < HANDLE_RINGS; ++ring)
+    for (int ring = 0; ring < rings_; ++ring)
       nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
         if (s.in_patch[w] == stamp)
           return false;
@@ -351,14 +352,14 @@ private:
     return search;
   }
 
-  /** Does a path off the patch, within 2 HANDLE_RINGS rings, join its first boundary loop to
+  /** Does a path off the patch, within 2 rings_ rings, join its first boundary loop to
     * another? */
   template <class Local>
   bool loopsJoinNear (PatchScratch& s, std::uint32_t stamp, const Local& local) const
   {
     const std::uint32_t first = s.loop_of.front ().second, search = startAtLoop (s, first);
     bool joined = false;
-    for (int ring = 0; ring < 2 * HANDLE_RINGS && !joined && !s.front.empty (); ++ring)
+    for (int ring = 0; ring < 2 * rings_ && !joined && !s.front.empty (); ++ring)
       nextRing (s.front, s.next, [&] (std::uint32_t u, std::uint32_t w) {
         if (s.seen[w] == search)
           return false;
@@ -402,13 +403,13 @@ private:
   }
 
   /** Does the surface open out past the patch's boundary loop \a loop: does a search off the
-    * patch from it reach, 2 HANDLE_RINGS rings on, more than twice as many vertices as the loop
+    * patch from it reach, 2 rings_ rings on, more than twice as many vertices as the loop
     * has? Along a tube the front stays as long as the loop; on a wall it grows with every ring. */
   bool opensOut (PatchScratch& s, std::uint32_t stamp, std::uint32_t loop) const
   {
     const std::uint32_t search = startAtLoop (s, loop);
     const std::size_t length = s.front.size ();
-    for (int ring = 0; ring < 2 * HANDLE_RINGS && !s.front.empty (); ++ring)
+    for (int ring = 0; ring < 2 * rings_ && !s.front.empty (); ++ring)
       nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
         if (s.seen[w] == search || s.in_patch[w] == stamp)
           return false;
@@ -422,14 +423,15 @@ private:
   const TrianglesAround around_;
   const std::vector<std::array<std::uint32_t, 3>> opposite_;
   const std::uint32_t n_;
+  const int rings_; ///< how many rings of triangles around a vertex make its patch
 };
 
-} // namespace
-
+/** smallHandlePatches(), or with \a wide wideTunnelPatches(). */
 SmallHandlePatches
-smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
-                    const std::vector<std::uint32_t>* near, const std::vector<std::array<double, 3>>* positions)
+handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
+               const std::vector<std::uint32_t>* near, const std::vector<std::array<double, 3>>* positions, bool wide)
 {
+  const int rings = wide ? WIDE_TUNNEL_RINGS : HANDLE_RINGS;
   // The genus of each connected part, from V - E + F with E = 3F / 2. The parts are found on all
   // threads.
   std::vector<std::uint32_t> part (num_vertices);
@@ -471,7 +473,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   // where such a part touches itself, counted once per fan, only adds to its V - F / 2).
   std::vector<std::uint8_t> of_genus_zero;
   bool any_of_genus_zero = false;
-  if (positions)
+  if (positions && !wide)
   {
     of_genus_zero.resize (num_vertices);
     for (std::uint32_t v = 0; v < num_vertices; ++v)
@@ -486,9 +488,33 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   std::vector<std::uint32_t> saddles;
   if (any_of_genus_zero)
     saddles = sharpSaddles (triangles, *positions, of_genus_zero);
+  std::vector<std::uint8_t> of_tunnel_ends;
+  if (wide && on_handles)
+  {
+    // The sharp saddles of the parts with a genus, where a tunnel's tube ends, as a web's does;
+    // but only on a part where they are few. Where noise makes them common, they mark no tube.
+    const std::vector<std::uint32_t> ends = sharpSaddles (triangles, *positions, look);
+    std::vector<long> saddles_of (num_vertices, 0);
+    for (std::uint32_t v : ends)
+      ++saddles_of[part[v]];
+    const auto few = [&] (std::uint32_t v) {
+      return saddles_of[part[v]] * WIDE_TUNNEL_SADDLE_SHARE <= vertices[part[v]];
+    };
+    of_tunnel_ends.assign (num_vertices, 0);
+    for (std::uint32_t v : ends)
+      of_tunnel_ends[v] = few (v);
+    on_handles = false;
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+    {
+      look[v] = look[v] && few (v);
+      on_handles = on_handles || look[v];
+    }
+  }
   if (!on_handles && saddles.empty ())
     return out;
-  const HandleFinder finder (triangles, num_vertices, on_handles);
+  // A search of a whole part finds the edges' opposite vertices first; one at its sharp saddles
+  // alone, as its patches need them.
+  const HandleFinder finder (triangles, num_vertices, on_handles && !wide, rings);
   if (on_handles)
   {
     // Where the surface touches itself at a vertex (a pinch the mending left, split after the
@@ -505,7 +531,10 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
   }
   if (!on_handles && saddles.empty ())
     return out;
-  if (!saddles.empty ())
+  if (wide)
+    for (std::uint32_t v = 0; v < num_vertices; ++v)
+      look[v] = look[v] && of_tunnel_ends[v];
+  else if (!saddles.empty ())
   {
     // The saddles and their neighbours: the patch around one next to a tube's end goes round it.
     finder.keepNear (saddles, 1, of_genus_zero);
@@ -513,7 +542,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
       look[v] = look[v] || of_genus_zero[v];
   }
   if (near)
-    finder.keepNear (*near, 2 * HANDLE_RINGS, look);
+    finder.keepNear (*near, 2 * rings, look);
   finder.keepCentres (look);
   struct Found
   {
@@ -530,7 +559,7 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
           return;
         auto& [scratch, list] = found.local ();
         const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch);
-        if (kind == HandleKind::none)
+        if (kind == HandleKind::none || (wide && kind != HandleKind::tunnel))
           return;
         Found& f = list.emplace_back (Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, {}});
         for (std::uint32_t w : scratch.vertices)
@@ -555,6 +584,22 @@ smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_ve
     out.begin.push_back (static_cast<std::uint32_t> (out.vertices.size ()));
   }
   return out;
+}
+
+} // namespace
+
+SmallHandlePatches
+smallHandlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
+                    const std::vector<std::uint32_t>* near, const std::vector<std::array<double, 3>>* positions)
+{
+  return handlePatches (triangles, num_vertices, near, positions, false);
+}
+
+SmallHandlePatches
+wideTunnelPatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertices,
+                   const std::vector<std::array<double, 3>>& positions)
+{
+  return handlePatches (triangles, num_vertices, nullptr, &positions, true);
 }
 
 } // namespace pcl_wrap::detail

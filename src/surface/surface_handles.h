@@ -63,4 +63,24 @@ constexpr double SADDLE_EXCESS = 0.5 * 3.14159265358979323846;
 /** \brief How many rings of triangles around a vertex smallHandlePatches() looks at. */
 constexpr int HANDLE_RINGS = 3;
 
+/** \brief The tunnels of a closed surface whose tube a patch of WIDE_TUNNEL_RINGS rings goes
+  * round: smallHandlePatches()'s tunnels, from wider patches, centred on the sharp saddles of the
+  * parts of genus above zero (a tunnel's tube ends on some, as a web's does), on a part only where
+  * at most one vertex in WIDE_TUNNEL_SADDLE_SHARE is one. A slit through a thin wall, a few
+  * spacings long, is too long for a patch of HANDLE_RINGS rings to go round.
+  * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
+  * \param[in] positions per vertex */
+SmallHandlePatches
+wideTunnelPatches (const std::vector<std::array<std::uint32_t, 3>>& triangles, std::uint32_t num_vertices,
+                   const std::vector<std::array<double, 3>>& positions);
+
+/** \brief How many rings of triangles around a vertex wideTunnelPatches() looks at. */
+constexpr int WIDE_TUNNEL_RINGS = 2 * HANDLE_RINGS;
+
+/** \brief wideTunnelPatches() looks at a part's sharp saddles only when at most one of its
+  * vertices in this many is one: they mark the ends of tubes on a smooth surface, which has few
+  * (0.6% of the vertices of a sphere with radial noise of half a spacing), not where noise makes
+  * them common (one vertex in nine with noise of a spacing). */
+constexpr long WIDE_TUNNEL_SADDLE_SHARE = 64;
+
 } // namespace pcl_wrap::detail
