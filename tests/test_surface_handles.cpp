@@ -131,7 +131,9 @@ TEST (SurfaceHandles, LargeOrLongHandlesAreNotSmall)
   {
     std::vector<Triangle> triangles;
     addTorus (around, tube, 0, triangles);
-    EXPECT_TRUE (detail::smallHandlePatches (triangles, around * tube).centres.empty ()) << around << " x " << tube;
+    const detail::SmallHandlePatches patches = detail::smallHandlePatches (triangles, around * tube);
+    EXPECT_TRUE (patches.centres.empty ()) << around << " x " << tube;
+    EXPECT_TRUE (patches.has_genus) << "a torus, whose handle is not small";
   }
 }
 
@@ -176,7 +178,9 @@ TEST (SurfaceHandles, APinchIsNoHandle)
   // V - F / 2 is 1, as for a torus, but the apex is two fans: no handle to look for. (Taken for a
   // torus, the surface has patches round its tube whose ends join near the apex.) The same tube
   // closed into a torus is a small handle.
-  EXPECT_TRUE (detail::smallHandlePatches (sphereTouchingItself (6, 8, 48), 49).centres.empty ());
+  const detail::SmallHandlePatches pinched = detail::smallHandlePatches (sphereTouchingItself (6, 8, 48), 49);
+  EXPECT_TRUE (pinched.centres.empty ());
+  EXPECT_FALSE (pinched.has_genus);
   std::vector<Triangle> torus;
   addTorus (8, 6, 0, torus);
   EXPECT_FALSE (detail::smallHandlePatches (torus, 48).centres.empty ());

@@ -137,9 +137,9 @@ public:
     if (stays_buried_.empty ())      // not a volume, whose solid is X's
     {
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-      std::vector<std::uint32_t> cut =
-          cutSmallHandles (smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions),
-                           positions);
+      SmallHandlePatches patches =
+          smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions);
+      std::vector<std::uint32_t> cut = cutSmallHandles (patches, positions);
       for (int pass = 1; !cut.empty (); ++pass)
       {
         surface.reset ();
@@ -153,13 +153,13 @@ public:
         joined.clear ();
         const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
         surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-        cut = cutSmallHandles (smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions),
-                               positions);
+        patches = smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions);
+        cut = cutSmallHandles (patches, positions);
       }
-      if (surface)
+      if (surface && patches.has_genus)
       {
-        // No small handle is left to cut: the tunnels too long for a small handle's patch (a slit
-        // through a thin wall) are looked for once more, in wider patches.
+        // No small handle is left to cut, but a genus is: the tunnels too long for a small
+        // handle's patch (a slit through a thin wall) are looked for once more, in wider patches.
         cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions), positions);
         if (!cut.empty ())
         {

@@ -528,6 +528,7 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
     for (std::uint32_t v = 0; v < num_vertices; ++v)
       vertices[part[v]] += fans[v] - 1;
     on_handles = lookOnHandles (look);
+    out.has_genus = on_handles && !wide;
   }
   if (!on_handles && saddles.empty ())
     return out;

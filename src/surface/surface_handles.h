@@ -25,6 +25,10 @@ struct SmallHandlePatches
     * opens out, less its rings from the other. A tube's cross-sections lie between two levels.
     * 0 for the other patches' vertices. */
   std::vector<std::int8_t> level;
+  /** smallHandlePatches(): whether some part of the surface has a genus (a vertex where it
+    * touches itself counted once per fan), near the vertices looked at or not. wideTunnelPatches()
+    * leaves it false. */
+  bool has_genus = false;
 };
 
 /** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
