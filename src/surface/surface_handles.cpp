@@ -497,18 +497,16 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
     std::vector<long> saddles_of (num_vertices, 0);
     for (std::uint32_t v : ends)
       ++saddles_of[part[v]];
-    const auto few = [&] (std::uint32_t v) {
-      return saddles_of[part[v]] * WIDE_TUNNEL_SADDLE_SHARE <= vertices[part[v]];
-    };
-    of_tunnel_ends.assign (num_vertices, 0);
-    for (std::uint32_t v : ends)
-      of_tunnel_ends[v] = few (v);
     on_handles = false;
     for (std::uint32_t v = 0; v < num_vertices; ++v)
     {
-      look[v] = look[v] && few (v);
+      look[v] = look[v] && saddles_of[part[v]] * WIDE_TUNNEL_SADDLE_SHARE <= vertices[part[v]];
       on_handles = on_handles || look[v];
     }
+    // The centres, once the pinches are counted: the saddles of the parts still looked at.
+    of_tunnel_ends.assign (num_vertices, 0);
+    for (std::uint32_t v : ends)
+      of_tunnel_ends[v] = 1;
   }
   if (!on_handles && saddles.empty ())
     return out;
