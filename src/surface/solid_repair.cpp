@@ -266,7 +266,7 @@ private:
         },
         16);
     const std::vector<HandleCut> candidates = gathered (found);
-    const std::vector<HandleCut> plugs = handlePlugs (patches);
+    const std::vector<HandleCut> plugs = handlePlugs (patches, positions, tunnelSpacings (patches, positions, s.star));
     std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
     std::uint32_t search = 0;
     for (const std::vector<HandleCut>* list : {&candidates, &plugs})
@@ -319,8 +319,14 @@ private:
     * of its patch (SmallHandlePatches::level) within WAIST_LEVELS of its middle, the connected
     * parts of the solid's tetrahedra within the patch with a corner at or below the lower level
     * and one at or above the higher, a slice across the tube that cuts it where it is solid.
-    * Sorted, weakest first. */
-  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches) const
+    * Such a slice also holds the solid of the objects at the tube's ends wherever their corners
+    * span the two levels. So there are gap slices too: the same, of the tetrahedra alone that
+    * hold an edge across a gap the sampling resolves (seversResolvedGapsOnly()'s rule; \a spacings
+    * per vertex of a tunnel's patch) whose ends' levels span the two levels, or one of two
+    * consecutive such pairs (a web one edge long can have the same level at both its ends); a web
+    * between two objects is made of such tetrahedra. Sorted, weakest first. */
+  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches, const std::vector<Point3>& positions,
+                                      const std::vector<double>& spacings) const
   {
     const SolidEulerChange& euler_change = *euler_change_;
     tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
@@ -370,9 +376,59 @@ private:
             for (std::vector<std::uint32_t>& part : partsOnOneSide (waist, scratch.parts))
               add (part, true);
           }
+          // The solid's tetrahedra with an edge across a resolved gap between two levels, each
+          // with the range of those edges' ends' levels.
+          const auto at = [&] (std::uint32_t v) {
+            return std::lower_bound (first, last, v) - patches.vertices.begin ();
+          };
+          std::vector<std::pair<std::uint32_t, std::array<int, 2>>> across;
+          for (const auto& [t, range] : solid)
+          {
+            std::array<int, 2> spans{INT8_MAX, INT8_MIN};
+            for (int a = 0; a < 4; ++a)
+              for (int b = a + 1; b < 4; ++b)
+              {
+                const std::uint32_t u = tetrahedra_.vertex (t, a), w = tetrahedra_.vertex (t, b);
+                const auto ku = at (u), kw = at (w);
+                if (patches.level[ku] != patches.level[kw] &&
+                    distance (positions[u], positions[w]) > UNRESOLVED_GAP * std::min (spacings[ku], spacings[kw]))
+                  spans = {std::min ({spans[0], int (patches.level[ku]), int (patches.level[kw])}),
+                           std::max ({spans[1], int (patches.level[ku]), int (patches.level[kw])})};
+              }
+            if (spans[0] < spans[1])
+              across.push_back ({t, spans});
+          }
+          for (int cut = -WAIST_LEVELS; cut < WAIST_LEVELS; ++cut)
+            for (int pairs = 1; pairs <= 2; ++pairs)
+            {
+              std::vector<std::uint32_t> waist; // across the gap, between cut and cut + pairs
+              for (const auto& [t, spans] : across)
+                if (spans[0] <= cut + pairs - 1 && cut < spans[1])
+                  waist.push_back (t);
+              for (std::vector<std::uint32_t>& part : partsOnOneSide (waist, scratch.parts))
+                add (part, true);
+            }
         },
         4);
     return gathered (found);
+  }
+
+  /** Per vertex of \a patches.vertices: the sample's spacing around it (spacingAround()) in the
+    * patch of a tunnel, for the gap slices of handlePlugs(); 0 elsewhere. \a star is scratch. */
+  std::vector<double> tunnelSpacings (const SmallHandlePatches& patches, const std::vector<Point3>& positions,
+                                      Star& star)
+  {
+    if (spacing_at_.empty ())
+      spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
+    std::vector<double> spacings (patches.vertices.size (), 0.0);
+    for (std::size_t i = 0; i < patches.centres.size (); ++i)
+      if (patches.tunnel[i])
+        for (std::uint32_t k = patches.begin[i]; k < patches.begin[i + 1]; ++k)
+        {
+          tetrahedra_.gatherStar (patches.vertices[k], star);
+          spacings[k] = spacingAround (tetrahedra_, star, patches.vertices[k], positions, spacing_at_, neighbour_star_);
+        }
+    return spacings;
   }
 
   /** The tetrahedra whose four vertices are all in [\a first, \a last) (ascending vertex ids),
