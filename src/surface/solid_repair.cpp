@@ -16,9 +16,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <queue>
 #include <utility>
 #include <vector>
 
@@ -230,6 +232,7 @@ private:
     std::vector<std::uint32_t> moved;
     if (patches.centres.empty ())
       return moved;
+    hull_hops_.clear (); // the labels have changed since the last search
     const SolidEulerChange& euler_change = eulerChange ();
     StarScratch s;
     // The vertices of the stars of the centres; of those of tunnels only, outside parts only.
@@ -593,14 +596,15 @@ private:
   /** The tetrahedra to move for \a part (sorted, all on one side) if the tetrahedra across its
     * facets on its side stay connected without it, through at most HANDLE_REACH tetrahedra of that
     * side from each (and, for the outside, through the space beyond the hull, which a search
-    * goes on looking for up to OUTSIDE_REACH tetrahedra), or, for the solid where \a may_split, if
-    * no search from them ends within HANDLE_REACH (what is left is connected or in large parts);
-    * empty if not. A move into the solid may enclose small pockets of the outside (a search from
-    * them ends within the reach, short of the hull): they move with it, as fillUnsampledVoids()
-    * would fill them. \a reached: per tetrahedron, the last \a search to reach it. */
+    * goes on looking for up to OUTSIDE_REACH tetrahedra, nearest the hull first), or, for the
+    * solid where \a may_split, if no search from them ends within HANDLE_REACH (what is left is
+    * connected or in large parts); empty if not. A move into the solid may enclose small pockets
+    * of the outside (a search from them ends within the reach, short of the hull): they move with
+    * it, as fillUnsampledVoids() would fill them. \a reached: per tetrahedron, the last \a search
+    * to reach it. */
   std::vector<std::uint32_t> moveKeepingSidesConnected (const std::vector<std::uint32_t>& part,
                                                         std::vector<std::uint32_t>& reached, std::uint32_t search,
-                                                        bool may_split) const
+                                                        bool may_split)
   {
     const bool side = inside (part.front ());
     const auto inPart = [&] (std::uint32_t t) { return std::binary_search (part.begin (), part.end (), t); };
@@ -627,12 +631,10 @@ private:
       queue.assign (1, seed);
       reached[seed] = search;
       bool hull_reached = false;
-      for (std::size_t k = 0; k < queue.size () && (queue.size () <= HANDLE_REACH ||
-                                                    (!side && !hull_reached && queue.size () <= OUTSIDE_REACH));
-           ++k)
+      const auto reach = [&] (std::uint32_t t) {
         for (int i = 0; i < 4; ++i)
         {
-          const std::uint32_t u = tetrahedra_.neighbour (queue[k], i);
+          const std::uint32_t u = tetrahedra_.neighbour (t, i);
           if (u == OUTSIDE_HULL)
             hull_reached = true;
           else if (reached[u] != search && inside (u) == side && !inPart (u))
@@ -641,6 +643,28 @@ private:
             queue.push_back (u);
           }
         }
+      };
+      std::size_t k = 0;
+      for (; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
+        reach (queue[k]);
+      if (!side && !hull_reached && k < queue.size ())
+      {
+        // The way out of a cup's inside is long: the search goes on towards the hull, nearest
+        // first, until it is reached or the outside there is found enclosed.
+        const std::vector<std::uint32_t>& hops = hullHops ();
+        using Entry = std::pair<std::uint32_t, std::uint32_t>; // hops, tetrahedron
+        std::priority_queue<Entry, std::vector<Entry>, std::greater<>> front;
+        for (; k < queue.size (); ++k)
+          front.push ({hops[queue[k]], queue[k]});
+        while (!front.empty () && !hull_reached && queue.size () <= OUTSIDE_REACH)
+        {
+          const std::size_t before = queue.size ();
+          reach (front.top ().second);
+          front.pop ();
+          for (std::size_t j = before; j < queue.size (); ++j)
+            front.push ({hops[queue[j]], queue[j]});
+        }
+      }
       if (!side && !hull_reached && queue.size () <= HANDLE_REACH)
         move.insert (move.end (), queue.begin (), queue.end ()); // a pocket
       else
@@ -657,6 +681,40 @@ private:
       return {};
     std::sort (move.begin (), move.end ());
     return move;
+  }
+
+  /** Per tetrahedron of the outside, how many facets a path through the outside crosses to the
+    * hull at least (as the labels were when first asked for in a search for handles); the most
+    * for the others. */
+  const std::vector<std::uint32_t>& hullHops ()
+  {
+    if (!hull_hops_.empty ())
+      return hull_hops_;
+    hull_hops_.assign (tetrahedra_.size (), std::numeric_limits<std::uint32_t>::max ());
+    std::vector<std::uint32_t> front, next;
+    for (std::uint32_t t = 0; t < tetrahedra_.size (); ++t)
+      for (int i = 0; i < 4 && !inside (t); ++i)
+        if (tetrahedra_.neighbour (t, i) == OUTSIDE_HULL && hull_hops_[t] != 0)
+        {
+          hull_hops_[t] = 0;
+          front.push_back (t);
+        }
+    for (std::uint32_t hops = 1; !front.empty (); ++hops)
+    {
+      next.clear ();
+      for (std::uint32_t t : front)
+        for (int i = 0; i < 4; ++i)
+        {
+          const std::uint32_t u = tetrahedra_.neighbour (t, i);
+          if (u != OUTSIDE_HULL && !inside (u) && hull_hops_[u] > hops)
+          {
+            hull_hops_[u] = hops;
+            next.push_back (u);
+          }
+        }
+      front.swap (next);
+    }
+    return hull_hops_;
   }
 
   /** Per vertex, whether mendVertex() may have something to do there: the vertex is off the
@@ -1071,8 +1129,9 @@ private:
   std::vector<std::uint8_t> stays_buried_; // per vertex, with keep_buried; else empty
   std::vector<std::uint8_t> flipped_;
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
-  std::vector<double> spacing_at_;     // per vertex: spacingAt(), NaN until a gap check needs it
-  Star neighbour_star_;                // spacingAround()'s scratch
+  std::vector<std::uint32_t> hull_hops_;         // hullHops(), for one search for handles
+  std::vector<double> spacing_at_;               // per vertex: spacingAt(), NaN until a gap check needs it
+  Star neighbour_star_;                          // spacingAround()'s scratch
   std::optional<SolidEulerChange> euler_change_; // from the first mending on
 };
 
