@@ -7,8 +7,8 @@ Four thin capped cylinders side by side (bench/corpus.py's bridge case: radius 0
 drawn from seeds 1 to SEEDS (default 5): how many of the default surfaces come out as the four
 cylinders (closed, four components of genus 0, every point on them), and what the others are. A
 Markdown table. With --check, exits with status 1 unless every cloud from seeds 1 to 5 at 3.1,
-3.7 and 4.9 spacings comes out right (from seeds 1 to 10, two at 3.1 spacings do not). Uses BUILD_DIR/apps/pcl_wrap and
-BUILD_DIR/bench/mesh_quality.
+3.7 and 4.9 spacings comes out right (from seeds 1 to 10, two at 3.1 spacings do not). Uses
+BUILD_DIR/apps/pcl_wrap and BUILD_DIR/bench/mesh_quality.
 """
 import json
 import os

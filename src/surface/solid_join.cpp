@@ -58,7 +58,7 @@ public:
     }
     for (const auto& [a, spacing_a] : on_p)
       for (const auto& [b, spacing_b] : on_q)
-        if (distance (positions_[a], positions_[b]) <= UNRESOLVED_GAP * std::min (spacing_a, spacing_b))
+        if (!resolvedGap (positions_[a], positions_[b], spacing_a, spacing_b))
           return true;
     return false;
   }
@@ -198,6 +198,12 @@ moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::ve
 }
 
 } // namespace
+
+bool
+resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b)
+{
+  return distance (a, b) > UNRESOLVED_GAP * std::min (spacing_a, spacing_b);
+}
 
 double
 spacingAt (const Tetrahedra& tetrahedra, const Star& star, std::uint32_t v, const std::vector<Point3>& positions)

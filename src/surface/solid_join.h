@@ -26,6 +26,11 @@ constexpr std::size_t FRAGMENT_VERTICES = 32;
   * are apart. */
 constexpr double UNRESOLVED_GAP = 1.5;
 
+/** \brief Do \a a and \a b, whose spacings are \a spacing_a and \a spacing_b, lie a gap apart that
+  * the sampling resolves: more than UNRESOLVED_GAP times the smaller spacing? */
+bool
+resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b);
+
 /** \brief The spacing at vertex \a v, whose star \a star holds: its shortest Delaunay edge (a lone
   * point of a coarse sample has a long one). */
 double

@@ -8,7 +8,6 @@
 #include "surface/solid_parts.h"
 #include "surface/solid_voids.h"
 #include "surface/surface_handles.h"
-#include "util/distance.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 #include "wrap/boundary.h"
@@ -394,7 +393,7 @@ private:
                 const std::uint32_t u = tetrahedra_.vertex (t, a), w = tetrahedra_.vertex (t, b);
                 const auto ku = at (u), kw = at (w);
                 if (patches.level[ku] != patches.level[kw] &&
-                    distance (positions[u], positions[w]) > UNRESOLVED_GAP * std::min (spacings[ku], spacings[kw]))
+                    resolvedGap (positions[u], positions[w], spacings[ku], spacings[kw]))
                   spans = {std::min ({spans[0], int (patches.level[ku]), int (patches.level[kw])}),
                            std::max ({spans[1], int (patches.level[ku]), int (patches.level[kw])})};
               }
@@ -421,17 +420,22 @@ private:
   std::vector<double> tunnelSpacings (const SmallHandlePatches& patches, const std::vector<Point3>& positions,
                                       Star& star)
   {
-    if (spacing_at_.empty ())
-      spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
     std::vector<double> spacings (patches.vertices.size (), 0.0);
     for (std::size_t i = 0; i < patches.centres.size (); ++i)
       if (patches.tunnel[i])
         for (std::uint32_t k = patches.begin[i]; k < patches.begin[i + 1]; ++k)
-        {
-          tetrahedra_.gatherStar (patches.vertices[k], star);
-          spacings[k] = spacingAround (tetrahedra_, star, patches.vertices[k], positions, spacing_at_, neighbour_star_);
-        }
+          spacings[k] = sampleSpacingAround (patches.vertices[k], positions, star);
     return spacings;
+  }
+
+  /** spacingAround() at vertex \a v, with the spacings at vertices kept from call to call.
+    * \a star is scratch. */
+  double sampleSpacingAround (std::uint32_t v, const std::vector<Point3>& positions, Star& star)
+  {
+    if (spacing_at_.empty ())
+      spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
+    tetrahedra_.gatherStar (v, star);
+    return spacingAround (tetrahedra_, star, v, positions, spacing_at_, neighbour_star_);
   }
 
   /** The tetrahedra whose four vertices are all in [\a first, \a last) (ascending vertex ids),
@@ -493,8 +497,6 @@ private:
     * keeps. \a star is scratch. */
   bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, const std::vector<Point3>& positions, Star& star)
   {
-    if (spacing_at_.empty ())
-      spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
     const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
     // Per vertex of the move: its neighbours along the edges the solid keeps.
     const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (move);
@@ -516,10 +518,7 @@ private:
     std::vector<double> spacing (corners.size (), std::numeric_limits<double>::quiet_NaN ());
     const auto spacingOf = [&] (std::size_t k) {
       if (std::isnan (spacing[k]))
-      {
-        tetrahedra_.gatherStar (corners[k], star);
-        spacing[k] = spacingAround (tetrahedra_, star, corners[k], positions, spacing_at_, neighbour_star_);
-      }
+        spacing[k] = sampleSpacingAround (corners[k], positions, star);
       return spacing[k];
     };
     std::vector<std::uint32_t> common;
@@ -530,8 +529,7 @@ private:
           const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
           if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
             continue; // kept
-          if (distance (positions[corners[a]], positions[corners[b]]) >
-              UNRESOLVED_GAP * std::min (spacingOf (a), spacingOf (b)))
+          if (resolvedGap (positions[corners[a]], positions[corners[b]], spacingOf (a), spacingOf (b)))
             continue; // a gap the sampling resolves
           common.clear ();
           std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
@@ -694,10 +692,11 @@ private:
     std::vector<std::uint32_t> front, next;
     for (std::uint32_t t = 0; t < tetrahedra_.size (); ++t)
       for (int i = 0; i < 4 && !inside (t); ++i)
-        if (tetrahedra_.neighbour (t, i) == OUTSIDE_HULL && hull_hops_[t] != 0)
+        if (tetrahedra_.neighbour (t, i) == OUTSIDE_HULL)
         {
           hull_hops_[t] = 0;
           front.push_back (t);
+          break;
         }
     for (std::uint32_t hops = 1; !front.empty (); ++hops)
     {
