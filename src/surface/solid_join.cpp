@@ -25,6 +25,12 @@ namespace
   * tetrahedra that reaches no further ends in a stray point's own few tetrahedra. */
 constexpr std::size_t FLOATING_REACH = 256;
 
+/** How many times longer than the longest edge of a path of X's tetrahedra to the solid every
+  * tetrahedron of a floating point's star that touches the solid must be for
+  * bringFloatingPointsOn() to take the path: such a tetrahedron across the object, from a point in
+  * a fold to the solid beyond, is tens of times longer; in a noisy layer the two are alike. */
+constexpr double SPIKE_LENGTH = 4.0;
+
 /** The points a join would tie together, and how far apart they are. */
 class JoinGaps
 {
@@ -107,10 +113,11 @@ public:
 
   /** Searches from the seeds through the outside tetrahedra that \a passable admits, cheapest
     * first, and stops at the first facet from a tetrahedron a it reached to an inside one b that
-    * \a accept (a, b) takes, or after expanding \a limit tetrahedra. Returns a (NONE if none):
-    * trace() gives the path to it. */
-  template <class Passable, class Accept>
-  std::uint32_t run (const Passable& passable, const Accept& accept, std::size_t limit)
+    * \a accept (a, b) takes, or after expanding \a limit tetrahedra. A path's cost is \a step
+    * (c, b) where it goes on to b from a path of cost c; it must not fall. Returns a (NONE if
+    * none): trace() gives the path to it, cost() its cost. */
+  template <class Passable, class Accept, class Step>
+  std::uint32_t run (const Passable& passable, const Accept& accept, std::size_t limit, const Step& step)
   {
     for (std::size_t expanded = 0; !queue_.empty () && expanded < limit;)
     {
@@ -130,7 +137,7 @@ public:
             return a;
           continue;
         }
-        const double through = c + labels_.margin[b];
+        const double through = step (c, b);
         if (through >= cost (b) || !passable (b))
           continue;
         reach (b, through, a);
@@ -149,6 +156,9 @@ public:
     return path;
   }
 
+  /** The cost of the cheapest path found to \a t (infinite if none). */
+  double cost (std::uint32_t t) const { return is_reached_[t] ? cost_[t] : std::numeric_limits<double>::infinity (); }
+
   /** Leaves the scratch arrays as they were before the seeds. */
   void clear ()
   {
@@ -160,8 +170,6 @@ public:
 
 private:
   using Entry = std::pair<double, std::uint32_t>;
-
-  double cost (std::uint32_t t) const { return is_reached_[t] ? cost_[t] : std::numeric_limits<double>::infinity (); }
 
   void reach (std::uint32_t t, double cost, std::uint32_t from)
   {
@@ -182,6 +190,18 @@ private:
   std::vector<std::uint32_t> reached_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
 };
+
+/** The longest edge of tetrahedron \a t. */
+double
+longestEdge (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, std::uint32_t t)
+{
+  const std::uint32_t* v = tetrahedra.vertices (t);
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest = std::max (longest, distance (positions[v[i]], positions[v[j]]));
+  return longest;
+}
 
 /** Moves the outside tetrahedra of \a path inside. */
 void
@@ -292,7 +312,8 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     };
     for (std::uint32_t t : members[p])
       paths.seed (t, 0);
-    const std::uint32_t end = paths.run (passable, accept, n);
+    const std::uint32_t end =
+        paths.run (passable, accept, n, [&] (double c, std::uint32_t t) { return c + labels.margin[t]; });
     if (end != NONE)
     {
       joined.attach (mine, goal);
@@ -307,8 +328,8 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
 }
 
 std::vector<std::uint32_t>
-bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels,
-                       std::vector<std::uint8_t>& moved_flags)
+bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+                       SolidLabels& labels, std::vector<std::uint8_t>& moved_flags)
 {
   constexpr std::uint32_t NONE = CheapestPaths::NONE;
   const std::uint32_t num_vertices = tetrahedra.complex ().numVertices ();
@@ -323,29 +344,77 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidL
   });
   std::vector<std::uint32_t> moved;
   CheapestPaths paths (tetrahedra, labels);
-  const auto passable = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
+  const auto in_x = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
   const auto accept = [] (std::uint32_t, std::uint32_t) { return true; };
+  const auto summed_margins = [&] (double c, std::uint32_t t) { return c + labels.margin[t]; };
+  const auto longest_edge = [&] (std::uint32_t t) { return longestEdge (tetrahedra, positions, t); };
+  const auto longest_edge_on = [&] (double c, std::uint32_t t) { return std::max (c, longest_edge (t)); };
+  const auto touches_solid = [&] (std::uint32_t t) {
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t u = tetrahedra.neighbour (t, i);
+      if (u != OUTSIDE_HULL && labels.inside[u])
+        return true;
+    }
+    return false;
+  };
+  // Would moving the outside tetrahedra of path inside leave one of their corners with no outside
+  // tetrahedron around it (nor the hull)? The mending could not bring it back through them.
+  Star around;
+  const auto buries = [&] (const std::vector<std::uint32_t>& path) {
+    for (std::uint32_t u : tetrahedra.verticesOf (path))
+    {
+      tetrahedra.gatherStar (u, around);
+      const bool open = std::any_of (around.tetrahedra ().begin (), around.tetrahedra ().end (), [&] (std::uint32_t t) {
+        if (std::find (path.begin (), path.end (), t) != path.end ())
+          return false;
+        if (!labels.inside[t])
+          return true;
+        for (int i = 0; i < 4; ++i)
+          if (tetrahedra.vertex (t, i) != u && tetrahedra.neighbour (t, i) == OUTSIDE_HULL)
+            return true; // u is on a hull facet of t
+        return false;
+      });
+      if (!open)
+        return true;
+    }
+    return false;
+  };
   Star star;
   for (std::uint32_t v = 0; v < num_vertices; ++v)
   {
     if (on_solid[v])
       continue;
-    // A point whose star touches the solid is the mending's: it moves one tetrahedron there.
     tetrahedra.gatherStar (v, star);
-    if (std::any_of (star.tetrahedra ().begin (), star.tetrahedra ().end (), [&] (std::uint32_t t) {
-          for (int i = 0; i < 4; ++i)
-          {
-            const std::uint32_t u = tetrahedra.neighbour (t, i);
-            if (u != OUTSIDE_HULL && labels.inside[u])
-              return true;
-          }
-          return false;
-        }))
-      continue;
+    // A point whose star touches the solid is the mending's, which moves one tetrahedron there,
+    // unless those are all much longer than a way to the solid nearby through X's smaller ones:
+    // where the solid beside the point is a fold away, one of them would be a spike across the
+    // object.
+    double nearest_touch = std::numeric_limits<double>::infinity ();
     for (std::uint32_t t : star.tetrahedra ())
-      if (passable (t))
-        paths.seed (t, labels.margin[t]);
-    const std::uint32_t end = paths.run (passable, accept, FLOATING_REACH);
+      if (touches_solid (t))
+        nearest_touch = std::min (nearest_touch, longest_edge (t));
+    std::uint32_t end = NONE;
+    if (nearest_touch < std::numeric_limits<double>::infinity ())
+    {
+      // Only tetrahedra short enough for the path to be taken are searched: in a noisy layer, none.
+      const auto short_in_x = [&] (std::uint32_t t) {
+        return in_x (t) && SPIKE_LENGTH * longest_edge (t) < nearest_touch;
+      };
+      for (std::uint32_t t : star.tetrahedra ())
+        if (short_in_x (t))
+          paths.seed (t, longest_edge (t));
+      end = paths.run (short_in_x, accept, FLOATING_REACH, longest_edge_on);
+      if (end != NONE && buries (paths.trace (end)))
+        end = NONE;
+    }
+    else
+    {
+      for (std::uint32_t t : star.tetrahedra ())
+        if (in_x (t))
+          paths.seed (t, labels.margin[t]);
+      end = paths.run (in_x, accept, FLOATING_REACH, summed_margins);
+    }
     if (end != NONE)
     {
       const std::vector<std::uint32_t> path = paths.trace (end);

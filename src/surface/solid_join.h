@@ -67,17 +67,25 @@ SolidJoin
 joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                    const SolidParts& parts, SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
-/** \brief Brings onto the solid the points the labelling left floating in the outside, out of the
-  * mending's reach (none of their tetrahedra inside or next to an inside one), as where it cut
-  * through a thin, noisy part: from each, in the order of the vertex ids, the cheapest path (by
-  * summed margins) of outside tetrahedra of X, as in joinPartsThroughX(), from its star to the
-  * solid moves inside. X holds every point, as a vertex of its tetrahedra and triangles where it
-  * samples the object; a stray point that X holds by edges alone (an outlier), or whose path is
-  * longer than a few hundred tetrahedra, stays where it is.
+/** \brief Brings onto the solid the points the labelling left floating in the outside, in the
+  * order of the vertex ids, each by a path of outside tetrahedra from its star to the solid.
+  *
+  * A point out of the mending's reach (none of its tetrahedra inside or next to an inside one), as
+  * where the labelling cut through a thin, noisy part, takes the cheapest path (by summed margins)
+  * of X's tetrahedra, as in joinPartsThroughX(). X holds every point, as a vertex of its
+  * tetrahedra and triangles where it samples the object; a stray point that X holds by edges
+  * alone (an outlier), or whose path is longer than a few hundred tetrahedra, stays where it is.
+  *
+  * A point whose star touches the solid is left to the mending, which moves one of those
+  * tetrahedra, unless every one of them is more than four times as long (longest edge) as a path
+  * of X's tetrahedra to the solid: then the path whose longest edge is shortest moves, if it buries
+  * no point. Where the solid beside the point is a fold or a crease away, the star's tetrahedra
+  * that touch the solid reach across the object, and moving one would draw a spike through it.
+  * \param[in] positions per vertex
   * \param[in,out] moved per tetrahedron, set for those it moves
   * \return the tetrahedra it moved inside, in the order it moved them */
 std::vector<std::uint32_t>
-bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, SolidLabels& labels,
-                       std::vector<std::uint8_t>& moved);
+bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+                       SolidLabels& labels, std::vector<std::uint8_t>& moved);
 
 } // namespace pcl_wrap::detail

@@ -106,7 +106,7 @@ public:
         const SolidJoin join =
             joinPartsThroughX (tetrahedra_, x, positions, sides.solid (labels_.inside), labels_, flipped_);
         done.flipped += join.moved.size ();
-        done.flipped += bringFloatingPointsOn (tetrahedra_, x, labels_, flipped_).size ();
+        done.flipped += bringFloatingPointsOn (tetrahedra_, x, positions, labels_, flipped_).size ();
         one_part = join.parts == 1;
       }
     }
