@@ -25,12 +25,6 @@ namespace
   * tetrahedra that reaches no further ends in a stray point's own few tetrahedra. */
 constexpr std::size_t FLOATING_REACH = 256;
 
-/** How many times longer than the longest edge of a path of X's tetrahedra to the solid every
-  * tetrahedron of a floating point's star that touches the solid must be for
-  * bringFloatingPointsOn() to take the path: such a tetrahedron across the object, from a point in
-  * a fold to the solid beyond, is tens of times longer; in a noisy layer the two are alike. */
-constexpr double SPIKE_LENGTH = 4.0;
-
 /** The points a join would tie together, and how far apart they are. */
 class JoinGaps
 {
@@ -191,18 +185,6 @@ private:
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
 };
 
-/** The longest edge of tetrahedron \a t. */
-double
-longestEdge (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, std::uint32_t t)
-{
-  const std::uint32_t* v = tetrahedra.vertices (t);
-  double longest = 0.0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      longest = std::max (longest, distance (positions[v[i]], positions[v[j]]));
-  return longest;
-}
-
 /** Moves the outside tetrahedra of \a path inside. */
 void
 moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::vector<std::uint8_t>& moved_flags,
@@ -223,6 +205,17 @@ bool
 resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b)
 {
   return distance (a, b) > UNRESOLVED_GAP * std::min (spacing_a, spacing_b);
+}
+
+double
+longestEdge (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, std::uint32_t t)
+{
+  const std::uint32_t* v = tetrahedra.vertices (t);
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest = std::max (longest, distance (positions[v[i]], positions[v[j]]));
+  return longest;
 }
 
 double
@@ -386,43 +379,49 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
     if (on_solid[v])
       continue;
     tetrahedra.gatherStar (v, star);
-    // A point whose star touches the solid is the mending's, which moves one tetrahedron there,
-    // unless those are all much longer than a way to the solid nearby through X's smaller ones:
-    // where the solid beside the point is a fold away, one of them would be a spike across the
-    // object.
-    double nearest_touch = std::numeric_limits<double>::infinity ();
+    // The way the point comes on otherwise: a tetrahedron of its star that touches the solid,
+    // moved by the mending, or else X's cheapest path to the solid.
+    double usual = std::numeric_limits<double>::infinity ();
     for (std::uint32_t t : star.tetrahedra ())
       if (touches_solid (t))
-        nearest_touch = std::min (nearest_touch, longest_edge (t));
-    std::uint32_t end = NONE;
-    if (nearest_touch < std::numeric_limits<double>::infinity ())
-    {
-      // Only tetrahedra short enough for the path to be taken are searched: in a noisy layer, none.
-      const auto short_in_x = [&] (std::uint32_t t) {
-        return in_x (t) && SPIKE_LENGTH * longest_edge (t) < nearest_touch;
-      };
-      for (std::uint32_t t : star.tetrahedra ())
-        if (short_in_x (t))
-          paths.seed (t, longest_edge (t));
-      end = paths.run (short_in_x, accept, FLOATING_REACH, longest_edge_on);
-      if (end != NONE && buries (paths.trace (end)))
-        end = NONE;
-    }
-    else
+        usual = std::min (usual, longest_edge (t));
+    std::vector<std::uint32_t> path;
+    if (usual == std::numeric_limits<double>::infinity ())
     {
       for (std::uint32_t t : star.tetrahedra ())
         if (in_x (t))
           paths.seed (t, labels.margin[t]);
-      end = paths.run (in_x, accept, FLOATING_REACH, summed_margins);
+      const std::uint32_t end = paths.run (in_x, accept, FLOATING_REACH, summed_margins);
+      if (end != NONE)
+      {
+        path = paths.trace (end);
+        usual = 0.0;
+        for (std::uint32_t t : path)
+          usual = std::max (usual, longest_edge (t));
+      }
+      paths.clear ();
     }
-    if (end != NONE)
+    // Where the solid beside the point is a fold or a crease away, that way can be a spike across
+    // the object: a path of X's much shorter tetrahedra (the shortest longest edge first) is
+    // taken instead. Only tetrahedra short enough are searched: in a noisy layer, none.
+    if (usual < std::numeric_limits<double>::infinity ())
     {
-      const std::vector<std::uint32_t> path = paths.trace (end);
-      moveInside (path, labels, moved_flags, moved);
-      for (std::uint32_t t : path)
-        markOn (t);
+      const auto short_in_x = [&] (std::uint32_t t) { return in_x (t) && SPIKE_LENGTH * longest_edge (t) < usual; };
+      for (std::uint32_t t : star.tetrahedra ())
+        if (short_in_x (t))
+          paths.seed (t, longest_edge (t));
+      const std::uint32_t end = paths.run (short_in_x, accept, FLOATING_REACH, longest_edge_on);
+      if (end != NONE)
+      {
+        std::vector<std::uint32_t> shorter = paths.trace (end);
+        if (!buries (shorter))
+          path = std::move (shorter);
+      }
+      paths.clear ();
     }
-    paths.clear ();
+    moveInside (path, labels, moved_flags, moved);
+    for (std::uint32_t t : path)
+      markOn (t);
   }
   return moved;
 }

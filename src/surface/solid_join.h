@@ -31,6 +31,16 @@ constexpr double UNRESOLVED_GAP = 1.5;
 bool
 resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b);
 
+/** \brief How many times longer (by its longest edge) than another way to the solid a tetrahedron
+  * that would bring a floating or buried point onto the surface must be to be taken for a spike:
+  * one across the object, from a point in a fold to the solid beyond, is tens of times longer; in a
+  * noisy layer the ways are alike. */
+constexpr double SPIKE_LENGTH = 4.0;
+
+/** \brief The longest edge of tetrahedron \a t. */
+double
+longestEdge (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, std::uint32_t t);
+
 /** \brief The spacing at vertex \a v, whose star \a star holds: its shortest Delaunay edge (a lone
   * point of a coarse sample has a long one). */
 double

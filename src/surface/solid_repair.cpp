@@ -69,9 +69,10 @@ constexpr int WAIST_LEVELS = 2;
 class Repairer
 {
 public:
-  Repairer (const Tetrahedra& tetrahedra, SolidLabels& labels, bool keep_buried)
+  Repairer (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, SolidLabels& labels, bool keep_buried)
     : tetrahedra_ (tetrahedra),
       complex_ (tetrahedra.complex ()),
+      positions_ (positions),
       labels_ (labels),
       flipped_ (tetrahedra.size (), 0),
       unmended_ (complex_.numVertices (), 0)
@@ -90,8 +91,9 @@ public:
             stays_buried_[tetrahedra_.vertex (t, (i + j) & 3)] = 0;
   }
 
-  SolidRepair run (const Subcomplex& x, const std::vector<Point3>& positions)
+  SolidRepair run (const Subcomplex& x)
   {
+    const std::vector<Point3>& positions = positions_;
     SolidRepair done;
     bool one_part = false; // known to be one part, before the mending
     {
@@ -1088,11 +1090,22 @@ private:
         return false;
       };
       // The weakest that makes no handle, if any; in a volume, whose inside is X's, the weakest.
+      // Last, those SPIKE_LENGTH times longer than the shortest: from a point in a fold, they
+      // reach across the object.
       std::vector<std::uint32_t> candidates;
+      double shortest = std::numeric_limits<double>::infinity ();
       for (std::uint32_t t : s.star.tetrahedra ())
         if (!flipped_[t] && touches (t))
+        {
           candidates.push_back (t);
+          shortest = std::min (shortest, longestEdge (tetrahedra_, positions_, t));
+        }
+      const auto spike = [&] (std::uint32_t t) {
+        return longestEdge (tetrahedra_, positions_, t) > SPIKE_LENGTH * shortest;
+      };
       std::sort (candidates.begin (), candidates.end (), [&] (std::uint32_t t, std::uint32_t u) {
+        if (spike (t) != spike (u))
+          return spike (u);
         return labels_.margin[t] != labels_.margin[u] ? labels_.margin[t] < labels_.margin[u] : t < u;
       });
       const std::uint32_t best = firstMakingNoHandle (
@@ -1124,6 +1137,7 @@ private:
 
   const Tetrahedra& tetrahedra_;
   const SimplicialComplex& complex_;
+  const std::vector<Point3>& positions_;
   SolidLabels& labels_;
   std::vector<std::uint8_t> stays_buried_; // per vertex, with keep_buried; else empty
   std::vector<std::uint8_t> flipped_;
@@ -1142,7 +1156,7 @@ repairSolid (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vecto
 {
   if (tetrahedra.complex ().dimension () != 3)
     return {};
-  return Repairer (tetrahedra, labels, keep_buried).run (x, positions);
+  return Repairer (tetrahedra, positions, labels, keep_buried).run (x);
 }
 
 } // namespace pcl_wrap::detail
