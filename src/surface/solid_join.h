@@ -87,10 +87,13 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
   * alone (an outlier), or whose path is longer than a few hundred tetrahedra, stays where it is.
   *
   * A point whose star touches the solid is left to the mending, which moves one of those
-  * tetrahedra, unless every one of them is more than four times as long (longest edge) as a path
-  * of X's tetrahedra to the solid: then the path whose longest edge is shortest moves, if it buries
-  * no point. Where the solid beside the point is a fold or a crease away, the star's tetrahedra
-  * that touch the solid reach across the object, and moving one would draw a spike through it.
+  * tetrahedra.
+  *
+  * Where the solid beside the point is a fold or a crease away, either way can reach across the
+  * object and draw a spike through it. So when a path of X's tetrahedra reaches the solid whose
+  * longest edge is more than SPIKE_LENGTH times shorter than that way's (the cheapest path's
+  * longest edge, or the shortest of the star's tetrahedra that touch the solid), the path whose
+  * longest edge is shortest moves instead, if it buries no point.
   * \param[in] positions per vertex
   * \param[in,out] moved per tetrahedron, set for those it moves
   * \return the tetrahedra it moved inside, in the order it moved them */
