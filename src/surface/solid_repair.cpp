@@ -93,7 +93,6 @@ public:
 
   SolidRepair run (const Subcomplex& x)
   {
-    const std::vector<Point3>& positions = positions_;
     SolidRepair done;
     bool one_part = false; // known to be one part, before the mending
     {
@@ -106,9 +105,9 @@ public:
         // The parts the labelling cut apart, joined while their fragments are small, then the
         // points it left floating between them, brought on (each by a path to the solid).
         const SolidJoin join =
-            joinPartsThroughX (tetrahedra_, x, positions, sides.solid (labels_.inside), labels_, flipped_);
+            joinPartsThroughX (tetrahedra_, x, positions_, sides.solid (labels_.inside), labels_, flipped_);
         done.flipped += join.moved.size ();
-        done.flipped += bringFloatingPointsOn (tetrahedra_, x, positions, labels_, flipped_).size ();
+        done.flipped += bringFloatingPointsOn (tetrahedra_, x, positions_, labels_, flipped_).size ();
         one_part = join.parts == 1;
       }
     }
@@ -127,7 +126,7 @@ public:
     if (!one_part || !staysOnePart (tetrahedra_, labels_.inside, changedSince (before_mending)))
     {
       const SolidParts parts = solidParts (tetrahedra_, labels_.inside);
-      joined = joinPartsThroughX (tetrahedra_, x, positions, parts, labels_, flipped_).moved;
+      joined = joinPartsThroughX (tetrahedra_, x, positions_, parts, labels_, flipped_).moved;
     }
     before_mending = {};
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
@@ -141,8 +140,8 @@ public:
     {
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
       SmallHandlePatches patches =
-          smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions);
-      std::vector<std::uint32_t> cut = cutSmallHandles (patches, positions);
+          smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions_);
+      std::vector<std::uint32_t> cut = cutSmallHandles (patches);
       for (int pass = 1; !cut.empty (); ++pass)
       {
         surface.reset ();
@@ -156,14 +155,14 @@ public:
         joined.clear ();
         const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
         surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-        patches = smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions);
-        cut = cutSmallHandles (patches, positions);
+        patches = smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions_);
+        cut = cutSmallHandles (patches);
       }
       if (surface && patches.has_genus)
       {
         // No small handle is left to cut, but a genus is: the tunnels too long for a small
         // handle's patch (a slit through a thin wall) are looked for once more, in wider patches.
-        cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions), positions);
+        cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions_));
         if (!cut.empty ())
         {
           surface.reset ();
@@ -228,7 +227,7 @@ private:
     * solid each join points a gap apart that the sampling resolves (seversResolvedGapsOnly()): a
     * tube of the solid across a gap no points sample, where a thin wire the points sample stays.
     * Returns the tetrahedra moved. */
-  std::vector<std::uint32_t> cutSmallHandles (const SmallHandlePatches& patches, const std::vector<Point3>& positions)
+  std::vector<std::uint32_t> cutSmallHandles (const SmallHandlePatches& patches)
   {
     std::vector<std::uint32_t> moved;
     if (patches.centres.empty ())
@@ -270,7 +269,7 @@ private:
         },
         16);
     const std::vector<HandleCut> candidates = gathered (found);
-    const std::vector<HandleCut> plugs = handlePlugs (patches, positions, tunnelSpacings (patches, positions, s.star));
+    const std::vector<HandleCut> plugs = handlePlugs (patches, tunnelSpacings (patches, s.star));
     std::vector<std::uint32_t> reached (tetrahedra_.size (), 0);
     std::uint32_t search = 0;
     for (const std::vector<HandleCut>* list : {&candidates, &plugs})
@@ -282,10 +281,10 @@ private:
           continue; // moved in part
         if (euler_change (c.tetrahedra, s.euler) < 1)
           continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
-        if (c.web && !seversResolvedGapsOnly (c.tetrahedra, positions, s.star))
+        if (c.web && !seversResolvedGapsOnly (c.tetrahedra, s.star))
           continue; // it would cut what the points sample (and so would any larger move)
         const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s, c.web);
-        if (move.empty () || (c.web && move != c.tetrahedra && !seversResolvedGapsOnly (move, positions, s.star)))
+        if (move.empty () || (c.web && move != c.tetrahedra && !seversResolvedGapsOnly (move, s.star)))
           continue; // its handle is cut, or the move would cut a side in two, leave a pinch or cut a wire
         for (std::uint32_t t : move)
         {
@@ -329,8 +328,7 @@ private:
     * per vertex of a tunnel's patch) whose ends' levels span the two levels, or one of two
     * consecutive such pairs (a web one edge long can have the same level at both its ends); a web
     * between two objects is made of such tetrahedra. Sorted, weakest first. */
-  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches, const std::vector<Point3>& positions,
-                                      const std::vector<double>& spacings) const
+  std::vector<HandleCut> handlePlugs (const SmallHandlePatches& patches, const std::vector<double>& spacings) const
   {
     const SolidEulerChange& euler_change = *euler_change_;
     tbb::enumerable_thread_specific<std::pair<StarScratch, std::vector<HandleCut>>> found;
@@ -395,7 +393,7 @@ private:
                 const std::uint32_t u = tetrahedra_.vertex (t, a), w = tetrahedra_.vertex (t, b);
                 const auto ku = at (u), kw = at (w);
                 if (patches.level[ku] != patches.level[kw] &&
-                    resolvedGap (positions[u], positions[w], spacings[ku], spacings[kw]))
+                    resolvedGap (positions_[u], positions_[w], spacings[ku], spacings[kw]))
                   spans = {std::min ({spans[0], int (patches.level[ku]), int (patches.level[kw])}),
                            std::max ({spans[1], int (patches.level[ku]), int (patches.level[kw])})};
               }
@@ -419,25 +417,24 @@ private:
 
   /** Per vertex of \a patches.vertices: the sample's spacing around it (spacingAround()) in the
     * patch of a tunnel, for the gap slices of handlePlugs(); 0 elsewhere. \a star is scratch. */
-  std::vector<double> tunnelSpacings (const SmallHandlePatches& patches, const std::vector<Point3>& positions,
-                                      Star& star)
+  std::vector<double> tunnelSpacings (const SmallHandlePatches& patches, Star& star)
   {
     std::vector<double> spacings (patches.vertices.size (), 0.0);
     for (std::size_t i = 0; i < patches.centres.size (); ++i)
       if (patches.tunnel[i])
         for (std::uint32_t k = patches.begin[i]; k < patches.begin[i + 1]; ++k)
-          spacings[k] = sampleSpacingAround (patches.vertices[k], positions, star);
+          spacings[k] = sampleSpacingAround (patches.vertices[k], star);
     return spacings;
   }
 
   /** spacingAround() at vertex \a v, with the spacings at vertices kept from call to call.
     * \a star is scratch. */
-  double sampleSpacingAround (std::uint32_t v, const std::vector<Point3>& positions, Star& star)
+  double sampleSpacingAround (std::uint32_t v, Star& star)
   {
     if (spacing_at_.empty ())
       spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
     tetrahedra_.gatherStar (v, star);
-    return spacingAround (tetrahedra_, star, v, positions, spacing_at_, neighbour_star_);
+    return spacingAround (tetrahedra_, star, v, positions_, spacing_at_, neighbour_star_);
   }
 
   /** The tetrahedra whose four vertices are all in [\a first, \a last) (ascending vertex ids),
@@ -497,7 +494,7 @@ private:
     * longer than UNRESOLVED_GAP times the smaller of the sample's spacings around its ends
     * (spacingAround()), or its ends must stay tied through a third point by edges the solid
     * keeps. \a star is scratch. */
-  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, const std::vector<Point3>& positions, Star& star)
+  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, Star& star)
   {
     const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
     // Per vertex of the move: its neighbours along the edges the solid keeps.
@@ -520,7 +517,7 @@ private:
     std::vector<double> spacing (corners.size (), std::numeric_limits<double>::quiet_NaN ());
     const auto spacingOf = [&] (std::size_t k) {
       if (std::isnan (spacing[k]))
-        spacing[k] = sampleSpacingAround (corners[k], positions, star);
+        spacing[k] = sampleSpacingAround (corners[k], star);
       return spacing[k];
     };
     std::vector<std::uint32_t> common;
@@ -531,7 +528,7 @@ private:
           const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
           if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
             continue; // kept
-          if (resolvedGap (positions[corners[a]], positions[corners[b]], spacingOf (a), spacingOf (b)))
+          if (resolvedGap (positions_[corners[a]], positions_[corners[b]], spacingOf (a), spacingOf (b)))
             continue; // a gap the sampling resolves
           common.clear ();
           std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
@@ -1092,22 +1089,23 @@ private:
       // The weakest that makes no handle, if any; in a volume, whose inside is X's, the weakest.
       // Last, those SPIKE_LENGTH times longer than the shortest: from a point in a fold, they
       // reach across the object.
-      std::vector<std::uint32_t> candidates;
+      std::vector<std::pair<std::uint32_t, double>> touching; // (tetrahedron, its longest edge)
       double shortest = std::numeric_limits<double>::infinity ();
       for (std::uint32_t t : s.star.tetrahedra ())
         if (!flipped_[t] && touches (t))
         {
-          candidates.push_back (t);
-          shortest = std::min (shortest, longestEdge (tetrahedra_, positions_, t));
+          touching.emplace_back (t, longestEdge (tetrahedra_, positions_, t));
+          shortest = std::min (shortest, touching.back ().second);
         }
-      const auto spike = [&] (std::uint32_t t) {
-        return longestEdge (tetrahedra_, positions_, t) > SPIKE_LENGTH * shortest;
-      };
-      std::sort (candidates.begin (), candidates.end (), [&] (std::uint32_t t, std::uint32_t u) {
-        if (spike (t) != spike (u))
-          return spike (u);
+      std::vector<std::uint32_t> candidates, spikes;
+      for (const auto& [t, longest] : touching)
+        (longest > SPIKE_LENGTH * shortest ? spikes : candidates).push_back (t);
+      const auto weakest_first = [&] (std::uint32_t t, std::uint32_t u) {
         return labels_.margin[t] != labels_.margin[u] ? labels_.margin[t] < labels_.margin[u] : t < u;
-      });
+      };
+      std::sort (candidates.begin (), candidates.end (), weakest_first);
+      std::sort (spikes.begin (), spikes.end (), weakest_first);
+      candidates.insert (candidates.end (), spikes.begin (), spikes.end ());
       const std::uint32_t best = firstMakingNoHandle (
           candidates, [] (std::uint32_t t) { return std::vector<std::uint32_t>{t}; }, s);
       if (best != NONE)
