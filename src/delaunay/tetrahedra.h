@@ -74,6 +74,13 @@ public:
   std::size_t size () const { return neighbours_.size () / 4; }
   /** \brief The tetrahedron across facet \a i of \a t (opposite its vertex i), or OUTSIDE_HULL. */
   std::uint32_t neighbour (std::uint32_t t, int i) const { return neighbours_[4 * std::size_t (t) + i]; }
+  /** \brief Does a facet of \a t lie on the convex hull? */
+  bool onHull (std::uint32_t t) const
+  {
+    const std::uint32_t* across = &neighbours_[4 * std::size_t (t)];
+    return across[0] == OUTSIDE_HULL || across[1] == OUTSIDE_HULL || across[2] == OUTSIDE_HULL ||
+           across[3] == OUTSIDE_HULL;
+  }
   /** \brief The facet of neighbour (t, i) through which it sees \a t. */
   int mirrorIndex (std::uint32_t t, int i) const
   {

@@ -82,8 +82,8 @@ inX (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t t)
   return false;
 }
 
-/** Cheapest paths, by summed margins, of outside tetrahedra to the solid: one search at a time, from
-  * seeds, in scratch arrays that each search leaves as it found them. */
+/** Cheapest paths of outside tetrahedra to the solid, by the cost that run() is given: one search
+  * at a time, from seeds, in scratch arrays that each search leaves as it found them. */
 class CheapestPaths
 {
 public:
@@ -184,6 +184,14 @@ private:
   std::vector<std::uint32_t> reached_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
 };
+
+/** The step of CheapestPaths::run() for a path's cost by summed margins: how strongly the labelling
+  * put its tetrahedra outside. */
+auto
+summedMargins (const SolidLabels& labels)
+{
+  return [&labels] (double c, std::uint32_t t) { return c + labels.margin[t]; };
+}
 
 /** Moves the outside tetrahedra of \a path inside. */
 void
@@ -305,8 +313,7 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     };
     for (std::uint32_t t : members[p])
       paths.seed (t, 0);
-    const std::uint32_t end =
-        paths.run (passable, accept, n, [&] (double c, std::uint32_t t) { return c + labels.margin[t]; });
+    const std::uint32_t end = paths.run (passable, accept, n, summedMargins (labels));
     if (end != NONE)
     {
       joined.attach (mine, goal);
@@ -339,7 +346,6 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
   CheapestPaths paths (tetrahedra, labels);
   const auto in_x = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
   const auto accept = [] (std::uint32_t, std::uint32_t) { return true; };
-  const auto summed_margins = [&] (double c, std::uint32_t t) { return c + labels.margin[t]; };
   const auto longest_edge = [&] (std::uint32_t t) { return longestEdge (tetrahedra, positions, t); };
   const auto longest_edge_on = [&] (double c, std::uint32_t t) { return std::max (c, longest_edge (t)); };
   const auto touches_solid = [&] (std::uint32_t t) {
@@ -391,7 +397,7 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
       for (std::uint32_t t : star.tetrahedra ())
         if (in_x (t))
           paths.seed (t, labels.margin[t]);
-      const std::uint32_t end = paths.run (in_x, accept, FLOATING_REACH, summed_margins);
+      const std::uint32_t end = paths.run (in_x, accept, FLOATING_REACH, summedMargins (labels));
       if (end != NONE)
       {
         path = paths.trace (end);

@@ -151,13 +151,7 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     }
   });
   // Where the flood starts, found here on all threads rather than by the flood's one.
-  const auto onHull = [&] (std::size_t t) {
-    for (int i = 0; i < 4; ++i)
-      if (adjacency.neighbour (static_cast<std::uint32_t> (t), i) == OUTSIDE_HULL)
-        return true;
-    return false;
-  };
-  on_hull_ = indicesWhere (n, onHull);
+  on_hull_ = indicesWhere (n, [&] (std::size_t t) { return adjacency.onHull (static_cast<std::uint32_t> (t)); });
 }
 
 void

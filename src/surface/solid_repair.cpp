@@ -690,13 +690,11 @@ private:
     hull_hops_.assign (tetrahedra_.size (), std::numeric_limits<std::uint32_t>::max ());
     std::vector<std::uint32_t> front, next;
     for (std::uint32_t t = 0; t < tetrahedra_.size (); ++t)
-      for (int i = 0; i < 4 && !inside (t); ++i)
-        if (tetrahedra_.neighbour (t, i) == OUTSIDE_HULL)
-        {
-          hull_hops_[t] = 0;
-          front.push_back (t);
-          break;
-        }
+      if (!inside (t) && tetrahedra_.onHull (t))
+      {
+        hull_hops_[t] = 0;
+        front.push_back (t);
+      }
     for (std::uint32_t hops = 1; !front.empty (); ++hops)
     {
       next.clear ();

@@ -30,9 +30,8 @@ fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vect
   // A part reaching the hull is the outside; the others are voids, most of them a few tetrahedra.
   std::unique_ptr<std::atomic<std::uint8_t>[]> open (new std::atomic<std::uint8_t>[n]());
   parallelForEach (n, [&] (std::size_t t) {
-    for (int i = 0; !inside[t] && i < 4; ++i)
-      if (tetrahedra.neighbour (static_cast<std::uint32_t> (t), i) == OUTSIDE_HULL)
-        open[sides.part (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
+    if (!inside[t] && tetrahedra.onHull (static_cast<std::uint32_t> (t)))
+      open[sides.part (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
   });
   const auto inVoid = [&] (std::size_t t) {
     return !inside[t] && !open[sides.part (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
