@@ -117,5 +117,32 @@ TEST (SurfaceKeepsPoints, AVolumeGivesItsOuterBoundary)
   EXPECT_LT (pointsOnSurface (r, cube.size ()).size () * 2, cube.size ());
 }
 
+TEST (SurfaceKeepsPoints, AThickShellGivesAnOuterSurfaceOfGenusZero)
+{
+  // Points scattered through a shell around the unit sphere (radial Gaussian noise of two to three
+  // spacings) sample a volume. Its solid, X's tetrahedra, can have a tunnel that a sheet of X's
+  // triangles spans: the surface must not go round it. Four of these six clouds have such a tunnel.
+  for (unsigned seed = 1; seed <= 3; ++seed)
+    for (double sigma : {0.03, 0.04})
+    {
+      SCOPED_TRACE ("seed " + std::to_string (seed) + ", sigma " + std::to_string (sigma));
+      std::vector<Point3> shell = sphereSample (20000, seed, 0.0);
+      std::mt19937_64 random (seed);
+      std::normal_distribution<double> g (1.0, sigma);
+      for (Point3& p : shell)
+      {
+        const double r = g (random);
+        p = {p[0] * r, p[1] * r, p[2] * r};
+      }
+      const WrapResult r = computeWrap (shell);
+      const SurfaceReport s = describeSurface ({r.surface.triangles.begin (), r.surface.triangles.end ()});
+      EXPECT_TRUE (s.closed_manifold);
+      EXPECT_EQ (s.components, 1u);
+      EXPECT_EQ (s.euler, 2) << "genus 0";
+      EXPECT_LT (pointsOnSurface (r, shell.size ()).size (), shell.size ()) << "a volume, with points inside";
+    }
+}
+
 } // namespace
+
 } // namespace pcl_wrap::test

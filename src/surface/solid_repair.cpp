@@ -135,39 +135,37 @@ public:
     if (euler_change_)
       for (std::uint32_t t : joined)
         euler_change_->changedSide (t);
-    std::optional<Boundary> surface; // while it is the solid's
-    if (stays_buried_.empty ())      // not a volume, whose solid is X's
+    // Small handles, cut. A volume's solid, X's tetrahedra, has them too: X is contractible, but
+    // where a sheet of its triangles spans a tunnel of its tetrahedra, the solid's surface goes
+    // round that tunnel. The surface is kept while it is the solid's.
+    std::optional<Boundary> surface = extractSolidBoundary (tetrahedra_, labels_.inside);
+    SmallHandlePatches patches = smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions_);
+    std::vector<std::uint32_t> cut = cutSmallHandles (patches);
+    for (int pass = 1; !cut.empty (); ++pass)
     {
+      surface.reset ();
+      joined.insert (joined.end (), cut.begin (), cut.end ());
+      if (pass == HANDLE_PASSES)
+        break;
+      // A cut changes the surface around it, and what it leaves (a handle that no candidate of
+      // the surface before took away, one the mending ties) is looked for again there.
+      done.flipped += joined.size ();
+      mend (tetrahedra_.verticesOf (joined), done);
+      joined.clear ();
+      const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
       surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-      SmallHandlePatches patches =
-          smallHandlePatches (surface->triangles, complex_.numVertices (), nullptr, &positions_);
-      std::vector<std::uint32_t> cut = cutSmallHandles (patches);
-      for (int pass = 1; !cut.empty (); ++pass)
+      patches = smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions_);
+      cut = cutSmallHandles (patches);
+    }
+    if (surface && patches.has_genus)
+    {
+      // No small handle is left to cut, but a genus is: the tunnels too long for a small
+      // handle's patch (a slit through a thin wall) are looked for once more, in wider patches.
+      cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions_));
+      if (!cut.empty ())
       {
         surface.reset ();
         joined.insert (joined.end (), cut.begin (), cut.end ());
-        if (pass == HANDLE_PASSES)
-          break;
-        // A cut changes the surface around it, and what it leaves (a handle that no candidate of
-        // the surface before took away, one the mending ties) is looked for again there.
-        done.flipped += joined.size ();
-        mend (tetrahedra_.verticesOf (joined), done);
-        joined.clear ();
-        const std::vector<std::uint32_t> near = tetrahedra_.verticesOf (cut);
-        surface = extractSolidBoundary (tetrahedra_, labels_.inside);
-        patches = smallHandlePatches (surface->triangles, complex_.numVertices (), &near, &positions_);
-        cut = cutSmallHandles (patches);
-      }
-      if (surface && patches.has_genus)
-      {
-        // No small handle is left to cut, but a genus is: the tunnels too long for a small
-        // handle's patch (a slit through a thin wall) are looked for once more, in wider patches.
-        cut = cutSmallHandles (wideTunnelPatches (surface->triangles, complex_.numVertices (), positions_));
-        if (!cut.empty ())
-        {
-          surface.reset ();
-          joined.insert (joined.end (), cut.begin (), cut.end ());
-        }
       }
     }
     done.flipped += joined.size ();
