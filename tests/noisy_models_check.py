@@ -3,9 +3,12 @@
 """usage: tests/noisy_models_check.py BUILD_DIR
 
 The default surface on development meshes resampled with noise of up to a spacing, drawn as
-bench/noisy_models.py draws them (seed 1): cases where the noise leaves the labelling many small
-handles close together, so that cutting some changes the surface around them and the handles
-left are found only by looking there again (docs/surface.md, "Cutting small handles"). Each must
+bench/noisy_models.py draws them: cases where the noise leaves the labelling many small handles
+close together, so that cutting some changes the surface around them and the handles left are
+found only by looking there again (docs/surface.md, "Cutting small handles"); and thin tubes (a
+knot, an anchor's arms) into which a chain of small, overlapping spheres crosses the noisy layer
+and would carry the outside's label through the tube if a vote for the same side counted as much
+as one for the other side (docs/surface.md, section 1). Each must
 come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
 points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
 """
@@ -21,10 +24,13 @@ import corpus  # noqa: E402
 import corpus_table  # noqa: E402
 import noisy_shapes  # noqa: E402
 
-CASES = [  # mesh, points, noise in median spacings
-    ("bunny00", 10000, 1.0),
-    ("dino", 100000, 1.0),
-    ("anchor_dense", 10000, 1.0),
+CASES = [  # mesh, points, noise in median spacings, seed
+    ("bunny00", 10000, 1.0, 1),
+    ("dino", 100000, 1.0, 1),
+    ("anchor_dense", 10000, 1.0, 1),
+    ("knot1", 10000, 1.0, 1),
+    ("knot1", 10000, 1.0, 3),
+    ("anchor_dense", 10000, 1.0, 3),
 ]
 
 
@@ -38,18 +44,18 @@ def main():
     wrong = []
     with tempfile.TemporaryDirectory() as work:
         cloud = os.path.join(work, "cloud.xyz")
-        for name, n, k in CASES:
+        for name, n, k, seed in CASES:
             vertices, triangles = meshes[name]
-            points, _ = noisy_shapes.draw(lambda: corpus.on_mesh(vertices, triangles, n), k, 1)
+            points, _ = noisy_shapes.draw(lambda: corpus.on_mesh(vertices, triangles, n), k, seed)
             np.savetxt(cloud, points, fmt="%.9g")
             case = {"components": 1, "genus": corpus.genus_of(vertices, triangles)}
             q = corpus_table.run(build, "pcl_wrap", cloud, work)
             ok = corpus_table.right(q, case, "pcl_wrap")
             got = corpus_table.described(q)
-            print("%-14s %7d noise %.2f  expected c1 g%d, got %s%s" % (name, n, k, case["genus"], got,
-                                                                    "" if ok else "  WRONG"))
+            print("%-14s %7d noise %.2f seed %d  expected c1 g%d, got %s%s" % (name, n, k, seed, case["genus"], got,
+                                                                            "" if ok else "  WRONG"))
             if not ok:
-                wrong.append("%s %d %g" % (name, n, k))
+                wrong.append("%s %d %g seed %d" % (name, n, k, seed))
     if wrong:
         sys.exit("wrong: " + ", ".join(wrong))
 

@@ -145,7 +145,9 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
       const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
       if (u != OUTSIDE_HULL && u < t)
         continue;
-      r.vote[i] = static_cast<std::int16_t> (std::lrint (vote (t, i) * VOTE_ONE));
+      const double cosine = vote (t, i);
+      const double weighed = cosine > 0 ? SAME_SIDE_WEIGHT * cosine : cosine;
+      r.vote[i] = static_cast<std::int16_t> (std::lrint (weighed * VOTE_ONE));
       if (u != OUTSIDE_HULL)
         tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r.vote[i];
     }

@@ -84,6 +84,16 @@ private:
   std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, the records freed
 };
 
+/** \brief The weight of a vote for the same side against one for the other side: a vote for the same
+  * side counts SAME_SIDE_WEIGHT times its cosine, so a crossing (two spheres that barely touch,
+  * cosine near -1) outranks any overlap, and a deep overlap a weak crossing. In a noisy layer a
+  * chain of small spheres that overlap well (cosines 0.93 to 0.99) can cross the layer from the
+  * outside into a thin tube and carry the outside's label through it, ahead of crossings, almost
+  * as strong, that say the tube is inside (docs/surface.md, §1): the development meshes knot1 and
+  * anchor_dense resampled with 10,000 points and noise of a spacing lose their tube so at 1 and
+  * 0.97, and keep it at 0.95 (bench/noisy_models.py, seeds 1 to 3). */
+constexpr double SAME_SIDE_WEIGHT = 0.95;
+
 /** \brief The tetrahedra flagged in \a inside and all their faces, per dimension: the subcomplex
   * whose boundary is the surface. */
 std::array<std::vector<std::uint8_t>, 4>
