@@ -327,14 +327,7 @@ TEST (CleanSurface, NoiseOfASpacingLeavesNoInnerVoidAndFewHandles)
   {
     SCOPED_TRACE (sigma);
     SCOPED_TRACE (seed);
-    std::mt19937_64 random (seed);
-    std::normal_distribution<double> g;
-    std::vector<Point3> points (100000);
-    for (auto& p : points)
-    {
-      const double x = g (random), y = g (random), z = g (random), r = std::sqrt (x * x + y * y + z * z);
-      p = {x / r + sigma * g (random), y / r + sigma * g (random), z / r + sigma * g (random)};
-    }
+    const std::vector<Point3> points = noisySphereSample (100000, seed, sigma);
     const WrapResult r = computeWrap (points);
     const SurfaceReport s = describeSurface (trianglesOf (r));
     EXPECT_TRUE (s.closed_manifold);

@@ -320,14 +320,7 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnNoiseOfASpacing)
 {
   // Noise of a spacing (40,000 points on the unit sphere are about 0.009 apart): the repair
   // moves thousands of tetrahedra, weakest first, ties broken by their numbering.
-  std::mt19937_64 random (17);
-  std::normal_distribution<double> g;
-  std::vector<Point3> points (40000);
-  for (auto& p : points)
-  {
-    const double x = g (random), y = g (random), z = g (random), r = std::sqrt (x * x + y * y + z * z);
-    p = {x / r + 0.009 * g (random), y / r + 0.009 * g (random), z / r + 0.009 * g (random)};
-  }
+  const std::vector<Point3> points = test::noisySphereSample (40000, 17, 0.009);
   expectIdenticalSurface (writeCloud ("noisy_surface", points), {2, 3});
 }
 

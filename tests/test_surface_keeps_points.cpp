@@ -147,5 +147,4 @@ TEST (SurfaceKeepsPoints, AThickShellGivesAnOuterSurfaceOfGenusZero)
 }
 
 } // namespace
-
 } // namespace pcl_wrap::test

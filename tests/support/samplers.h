@@ -41,6 +41,21 @@ sphereSample (std::size_t n, unsigned seed, double noise = 1e-3)
   return p;
 }
 
+/** Uniform on the unit sphere, each coordinate then moved by Gaussian noise of deviation \a sigma. */
+inline std::vector<Point3>
+noisySphereSample (std::size_t n, unsigned seed, double sigma)
+{
+  std::mt19937_64 random (seed);
+  std::normal_distribution<double> g;
+  std::vector<Point3> p (n);
+  for (auto& q : p)
+  {
+    const double x = g (random), y = g (random), z = g (random), r = std::sqrt (x * x + y * y + z * z);
+    q = {x / r + sigma * g (random), y / r + sigma * g (random), z / r + sigma * g (random)};
+  }
+  return p;
+}
+
 /** Uniform in angle on a torus with radii \a major > \a minor around the z-axis. */
 inline std::vector<Point3>
 torusSample (std::size_t n, unsigned seed, double major = 1.0, double minor = 0.4)
