@@ -8,7 +8,9 @@ close together, so that cutting some changes the surface around them and the han
 found only by looking there again (docs/surface.md, "Cutting small handles"); and thin tubes (a
 knot, an anchor's arms) into which a chain of small, overlapping spheres crosses the noisy layer
 and would carry the outside's label through the tube if a vote for the same side counted as much
-as one for the other side (docs/surface.md, section 1). Each must
+as one for the other side (docs/surface.md, section 1); and a dino whose noisy leg touches its
+belly, where mending a pinch by moving a fan of long tetrahedra across the gap would tie the two
+by a web of many handles (docs/surface.md, "Mending"). Each must
 come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
 points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
 """
@@ -27,6 +29,7 @@ import noisy_shapes  # noqa: E402
 CASES = [  # mesh, points, noise in median spacings, seed
     ("bunny00", 10000, 1.0, 1),
     ("dino", 100000, 1.0, 1),
+    ("dino", 100000, 0.5, 1),
     ("anchor_dense", 10000, 1.0, 1),
     ("knot1", 10000, 1.0, 1),
     ("knot1", 10000, 1.0, 3),

@@ -952,10 +952,14 @@ private:
   }
 
   /** The part to move: the weakest movable part whose side has more than one part (moving the only
-    * part of a side would take v off the surface), of those that make no handle if any (but in a
-    * volume, whose solid is X's); NONE if none. A handle here is one the points do not show: two
-    * sheets of the surface that touch get tied by a tube, where cutting them apart keeps the
-    * solid's topology. */
+    * part of a side would take v off the surface), of those that make no handle if any, else of
+    * those that make one (in a volume, whose solid is X's, the weakest); NONE if none. A handle
+    * here is one the points do not show: two sheets of the surface that touch get tied by a tube,
+    * where cutting them apart keeps the solid's topology. A part whose move would make several
+    * handles at once is never moved: it is a fan of long tetrahedra across a concavity (a leg's
+    * to the belly beside it), which would tie the object to itself by a web that no later cut
+    * undoes. The vertex stays pinched then, and the surface is split there
+    * (splitSolidPinches()). */
   std::uint32_t partToMove (StarScratch& s, const Parts& parts) const
   {
     std::vector<std::uint32_t> candidates;
@@ -964,8 +968,18 @@ private:
         candidates.push_back (p);
     std::stable_sort (candidates.begin (), candidates.end (),
                       [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
-    return firstMakingNoHandle (
-        candidates, [&] (std::uint32_t p) { return members (s, parts, p); }, s);
+    if (candidates.empty () || !stays_buried_.empty ())
+      return candidates.empty () ? NONE : candidates.front ();
+    std::uint32_t making_one = NONE;
+    for (std::uint32_t p : candidates)
+    {
+      const int change = (*euler_change_) (members (s, parts, p), s.euler);
+      if (change >= 0)
+        return p;
+      if (change == -1 && making_one == NONE)
+        making_one = p;
+    }
+    return making_one;
   }
 
   /** The first of \a candidates (weakest first) whose move, the tetrahedra \a moved gives, makes no
