@@ -10,7 +10,7 @@ knot, an anchor's arms) into which a chain of small, overlapping spheres crosses
 and would carry the outside's label through the tube if a vote for the same side counted as much
 as one for the other side (docs/surface.md, section 1); and a dino whose noisy leg touches its
 belly, where mending a pinch by moving a fan of long tetrahedra across the gap would tie the two
-by a web of many handles (docs/surface.md, "Mending"). Each must
+by a web of many handles (docs/surface.md, section 2). Each must
 come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
 points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
 """
