@@ -956,9 +956,9 @@ private:
     * those that make one (in a volume, whose solid is X's, the weakest); NONE if none. A handle
     * here is one the points do not show: two sheets of the surface that touch get tied by a tube,
     * where cutting them apart keeps the solid's topology. A part whose move would make several
-    * handles at once is never moved: it is a fan of long tetrahedra across a concavity (a leg's
-    * to the belly beside it), which would tie the object to itself by a web that no later cut
-    * undoes. The vertex stays pinched then, and the surface is split there
+    * handles at once is never moved (on a noisy dino, a fan of long tetrahedra from a leg across
+    * the concavity to the belly is one: moved in, it ties the two by a web that no later cut
+    * undoes); the vertex stays pinched then, and the surface is split there
     * (splitSolidPinches()). */
   std::uint32_t partToMove (StarScratch& s, const Parts& parts) const
   {
