@@ -968,33 +968,38 @@ private:
         candidates.push_back (p);
     std::stable_sort (candidates.begin (), candidates.end (),
                       [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
-    if (candidates.empty () || !stays_buried_.empty ())
-      return candidates.empty () ? NONE : candidates.front ();
-    std::uint32_t making_one = NONE;
-    for (std::uint32_t p : candidates)
-    {
-      const int change = (*euler_change_) (members (s, parts, p), s.euler);
-      if (change >= 0)
-        return p;
-      if (change == -1 && making_one == NONE)
-        making_one = p;
-    }
-    return making_one;
+    return firstMakingNoHandle (
+        candidates, [&] (std::uint32_t p) { return members (s, parts, p); }, s, Fallback::making_one_handle);
   }
 
+  /** What firstMakingNoHandle() takes when every candidate makes a handle. */
+  enum class Fallback
+  {
+    weakest,          ///< the first of all, or the only one, unweighed
+    making_one_handle ///< the first that makes exactly one; none if each makes several
+  };
+
   /** The first of \a candidates (weakest first) whose move, the tetrahedra \a moved gives, makes no
-    * handle; the first of all when each makes one, when there is no other choice, or in a volume
-    * (whose solid is X's); NONE if there is none. */
+    * handle; else as \a fallback says; in a volume (whose solid is X's) the first of all; NONE if
+    * there is none. */
   template <class Moved>
-  std::uint32_t firstMakingNoHandle (const std::vector<std::uint32_t>& candidates, const Moved& moved,
-                                     StarScratch& s) const
+  std::uint32_t firstMakingNoHandle (const std::vector<std::uint32_t>& candidates, const Moved& moved, StarScratch& s,
+                                     Fallback fallback = Fallback::weakest) const
   {
     if (candidates.empty ())
       return NONE;
-    for (std::size_t k = 0; stays_buried_.empty () && candidates.size () > 1 && k < candidates.size (); ++k)
-      if ((*euler_change_) (moved (candidates[k]), s.euler) >= 0)
-        return candidates[k];
-    return candidates.front ();
+    if (!stays_buried_.empty () || (fallback == Fallback::weakest && candidates.size () == 1))
+      return candidates.front ();
+    std::uint32_t making_one = NONE;
+    for (std::uint32_t c : candidates)
+    {
+      const int change = (*euler_change_) (moved (c), s.euler);
+      if (change >= 0)
+        return c;
+      if (change == -1 && making_one == NONE)
+        making_one = c;
+    }
+    return fallback == Fallback::weakest ? candidates.front () : making_one;
   }
 
   static std::vector<std::uint32_t> members (const StarScratch& s, const Parts& parts, std::uint32_t p)
