@@ -109,9 +109,10 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   SolidLabels labels = known ? std::move (*known) : labelsFor (x);
   clock.stageDone ("labelling");
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
-  // the votes between their small spheres say nothing: the solid is X, whose boundary is the
-  // volume's outer surface (the paper's W), and the points inside stay inside.
-  const bool volume = !labels.hull && !single_layer && x.size (3) > 0 &&
+  // the votes between their small spheres say nothing, and so do most of a few scattered points
+  // whose votes enclose nothing (the solid is then their convex hull): the solid is X, whose
+  // boundary is the volume's outer surface (the paper's W), and the points inside stay inside.
+  const bool volume = !single_layer && x.size (3) > 0 &&
                       2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ();
   if (volume)
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {
