@@ -103,9 +103,10 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
 
 TEST (SurfaceKeepsPoints, TinyCloudsGiveAClosedManifoldThroughNearlyAllOfWsPoints)
 {
-  // Most of a few scattered points lie inside the solid, whose boundary is then X's (a volume's).
-  // A point that X holds by a fin of triangles, out of the mending's reach, can stay off it: the
-  // default may have fewer points on it than W on a few of these clouds, never on most.
+  // A few scattered points lie inside their convex hull, and the solid is X's (a volume's). A
+  // point that X holds by a fin of triangles, out of the mending's reach, can stay off it: the
+  // default may have fewer points on it than W on a few of these clouds, on no more than one in
+  // thirty.
   constexpr unsigned CLOUDS = 300;
   unsigned fewer = 0;
   for (unsigned seed = 1; seed <= CLOUDS; ++seed)
@@ -129,7 +130,7 @@ TEST (SurfaceKeepsPoints, TinyCloudsGiveAClosedManifoldThroughNearlyAllOfWsPoint
       EXPECT_TRUE (s.consistently_oriented);
     }
   }
-  EXPECT_LE (fewer, CLOUDS / 12);
+  EXPECT_LE (fewer, CLOUDS / 30);
   std::printf ("tiny clouds with fewer points on the default surface than on W: %u of %u\n", fewer, CLOUDS);
 }
 

@@ -109,11 +109,11 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   SolidLabels labels = known ? std::move (*known) : labelsFor (x);
   clock.stageDone ("labelling");
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
-  // the votes between their small spheres say nothing, and so do most of a few scattered points
-  // whose votes enclose nothing (the solid is then their convex hull): the solid is X, whose
+  // the votes between their small spheres say nothing; a few scattered points whose votes enclose
+  // nothing lie inside their convex hull, the solid then. Either way the solid is X, whose
   // boundary is the volume's outer surface (the paper's W), and the points inside stay inside.
   const bool volume = !single_layer && x.size (3) > 0 &&
-                      2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ();
+                      (labels.hull || 2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ());
   if (volume)
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {
       labels.inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
