@@ -109,9 +109,10 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   SolidLabels labels = known ? std::move (*known) : labelsFor (x);
   clock.stageDone ("labelling");
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
-  // the votes between their small spheres say nothing; a few scattered points whose votes enclose
-  // nothing lie inside their convex hull, the solid then. Either way the solid is X, whose
-  // boundary is the volume's outer surface (the paper's W), and the points inside stay inside.
+  // the votes between their small spheres say nothing; where no vote encloses anything (a few
+  // scattered points), the labels' solid is the convex hull, with points inside it. Either way the
+  // solid is X, whose boundary is the volume's outer surface (the paper's W), and the points
+  // inside stay inside.
   const bool volume = !single_layer && x.size (3) > 0 &&
                       (labels.hull || 2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ());
   if (volume)
