@@ -13,7 +13,6 @@ counts the surfaces with fewer input points on them than the paper's W (--raw). 
 per family; exits with status 1 if a run fails or a surface breaks its promise. Uses
 BUILD_DIR/apps/pcl_wrap.
 """
-import collections
 import json
 import os
 import subprocess
@@ -24,6 +23,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import corpus  # noqa: E402
+import single_layers  # noqa: E402
 
 
 def tiny(rng):
@@ -96,39 +96,15 @@ FAMILIES = (("a few dozen scattered points", tiny, []), ("small and degenerate",
             ("mid-size shapes, noise, duplicates, outliers", mid, []), ("single layers, --closed", layer, ["--closed"]))
 
 
-def triangles(path):
-    with open(path) as f:
-        return [[int(w.split("/")[0]) - 1 for w in line.split()[1:4]] for line in f if line.startswith("f ")]
-
-
-def broken(tris, sheet):
-    """What breaks the promise, or None: edges on more than two triangles (on one, unless a sheet),
-    an edge twice the same way, a vertex whose triangles make more than one fan."""
-    undirected, directed = collections.Counter(), collections.Counter()
-    links = collections.defaultdict(list)
-    for t in tris:
-        for i in range(3):
-            a, b, c = t[i], t[(i + 1) % 3], t[(i + 2) % 3]
-            undirected[min(a, b), max(a, b)] += 1
-            directed[a, b] += 1
-            links[a].append((b, c))
-    if any(k > 2 or (k == 1 and not sheet) for k in undirected.values()):
-        return "not a manifold along an edge" if any(k > 2 for k in undirected.values()) else "not closed"
-    if any(k > 1 for k in directed.values()):
+def broken(vertices, triangles, sheet):
+    """What breaks the promise, or None (single_layers.describe()'s checks)."""
+    d = single_layers.describe(vertices, triangles, len(vertices))
+    if not d["manifold"]:
+        return "not a manifold"
+    if not d["oriented"]:
         return "not oriented"
-    for v, link in links.items():  # the link's edges, joined at shared ends: one path or cycle
-        parent = {}
-
-        def find(x):
-            while parent.setdefault(x, x) != x:
-                parent[x] = parent[parent[x]]
-                x = parent[x]
-            return x
-
-        for b, c in link:
-            parent[find(b)] = find(c)
-        if len({find(b) for b, _ in link}) > 1:
-            return "not a manifold at a vertex"
+    if d["open"] and not sheet:
+        return "not closed"
     return None
 
 
@@ -144,13 +120,13 @@ def run(build, points, extra, work):
     subprocess.run([app, cloud, raw, "--quiet", "--raw"], check=True)
     with open(stats) as f:
         s = json.load(f)
-    tris, used = triangles(out), s["points"]["input"] - s["points"]["skipped"]
-    copies = s["manifold"]["copies"]
-    on = {v if v < used else copies[v - used] for t in tris for v in t}
-    on_w = {v for t in triangles(raw) for v in t}
+    vertices, tris = single_layers.read_obj(out)
+    used, copies = s["points"]["input"] - s["points"]["skipped"], s["manifold"]["copies"]
+    on = {v if v < used else copies[v - used] for v in np.unique(tris).tolist()}
+    on_w = np.unique(single_layers.read_obj(raw)[1])
     problem = None
-    if s["triangulation_dimension"] == 3 and tris:
-        problem = broken(tris, s["manifold"]["single_layer"] and "--closed" not in extra)
+    if s["triangulation_dimension"] == 3 and len(tris):
+        problem = broken(vertices, tris, s["manifold"]["single_layer"] and "--closed" not in extra)
     return problem, len(on) < len(on_w)
 
 

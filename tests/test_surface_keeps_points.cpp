@@ -44,17 +44,17 @@ blobSample (std::size_t n, int blobs, unsigned seed)
   return p;
 }
 
-/** \a n points, Gaussian or uniform in a cube: too few to show a shape. */
+/** \a n points, Gaussian or uniform in a cube (cubeSample()): too few to show a shape. */
 std::vector<Point3>
 tinyCloud (std::size_t n, bool gaussian, unsigned seed)
 {
+  if (!gaussian)
+    return cubeSample (n, seed);
   std::mt19937_64 random (seed);
   std::normal_distribution<double> g;
-  std::uniform_real_distribution<double> u (0.0, 1.0);
   std::vector<Point3> p (n);
   for (Point3& q : p)
-    for (double& c : q)
-      c = gaussian ? g (random) : u (random);
+    q = {g (random), g (random), g (random)};
   return p;
 }
 
@@ -77,6 +77,26 @@ samples ()
   return s;
 }
 
+/** The default surface is what it promises: one oriented sheet for a single layer; else, where
+  * the points span space, a closed, oriented 2-manifold. */
+void
+expectClosedOrOneSheet (const WrapResult& r)
+{
+  const std::vector<Triangle> triangles (r.surface.triangles.begin (), r.surface.triangles.end ());
+  if (r.statistics.single_layer)
+  {
+    const OpenSurfaceReport s = describeOpenSurface (triangles);
+    EXPECT_TRUE (s.manifold);
+    EXPECT_TRUE (s.consistently_oriented);
+  }
+  else if (r.statistics.triangulation_dimension == 3)
+  {
+    const SurfaceReport s = describeSurface (triangles);
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_TRUE (s.consistently_oriented);
+  }
+}
+
 TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
 {
   for (const auto& [name, points] : samples ())
@@ -85,19 +105,7 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
     const std::size_t on_w = pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ();
     const WrapResult r = computeWrap (points);
     EXPECT_GE (pointsOnSurface (r, points.size ()).size (), on_w);
-    const std::vector<Triangle> triangles (r.surface.triangles.begin (), r.surface.triangles.end ());
-    if (r.statistics.single_layer)
-    {
-      const OpenSurfaceReport s = describeOpenSurface (triangles);
-      EXPECT_TRUE (s.manifold);
-      EXPECT_TRUE (s.consistently_oriented);
-    }
-    else if (r.statistics.triangulation_dimension == 3)
-    {
-      const SurfaceReport s = describeSurface (triangles);
-      EXPECT_TRUE (s.closed_manifold);
-      EXPECT_TRUE (s.consistently_oriented);
-    }
+    expectClosedOrOneSheet (r);
   }
 }
 
@@ -116,19 +124,8 @@ TEST (SurfaceKeepsPoints, TinyCloudsGiveAClosedManifoldThroughNearlyAllOfWsPoint
     const std::size_t on_w = pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ();
     const WrapResult r = computeWrap (points);
     fewer += pointsOnSurface (r, points.size ()).size () < on_w;
-    const std::vector<Triangle> triangles (r.surface.triangles.begin (), r.surface.triangles.end ());
-    if (r.statistics.single_layer)
-    {
-      const OpenSurfaceReport s = describeOpenSurface (triangles);
-      EXPECT_TRUE (s.manifold);
-      EXPECT_TRUE (s.consistently_oriented);
-    }
-    else
-    {
-      const SurfaceReport s = describeSurface (triangles);
-      EXPECT_TRUE (s.closed_manifold);
-      EXPECT_TRUE (s.consistently_oriented);
-    }
+    ASSERT_EQ (r.statistics.triangulation_dimension, 3);
+    expectClosedOrOneSheet (r);
   }
   EXPECT_LE (fewer, CLOUDS / 30);
   std::printf ("tiny clouds with fewer points on the default surface than on W: %u of %u\n", fewer, CLOUDS);
