@@ -6,9 +6,10 @@ Random clouds through the CLI, CASES per family (default 100) from seeds SEED on
 few dozen scattered points (Gaussian or uniform), small structured and degenerate sets (spheres,
 tori, clusters, lattice subsets, a box's surface grid, a jittered grid, a thin slab, a far
 outlier), mid-size shapes of bench/corpus.py with noise of up to a spacing, duplicates and
-outliers, and single layers with --closed. Checks that every run succeeds and that its surface
-is what docs/surface.md promises: a closed, oriented 2-manifold (every edge on two triangles,
-once each way, every vertex's triangles one fan), or for a single layer one oriented sheet; and
+outliers, and single layers (terrains, spherical caps, half cylinders, slabs), by default and
+with --closed. Checks that every run succeeds and that its surface is what docs/surface.md
+promises: a closed, oriented 2-manifold (every edge on two triangles, once each way, every
+vertex's triangles one fan), or for a single layer by default one oriented sheet; and
 counts the surfaces with fewer input points on them than the paper's W (--raw). A Markdown table
 per family; exits with status 1 if a run fails or a surface breaks its promise. Uses
 BUILD_DIR/apps/pcl_wrap.
@@ -93,7 +94,8 @@ def layer(rng):
 
 
 FAMILIES = (("a few dozen scattered points", tiny, []), ("small and degenerate", small, []),
-            ("mid-size shapes, noise, duplicates, outliers", mid, []), ("single layers, --closed", layer, ["--closed"]))
+            ("mid-size shapes, noise, duplicates, outliers", mid, []), ("single layers", layer, []),
+            ("single layers, --closed", layer, ["--closed"]))
 
 
 def broken(vertices, triangles, sheet):

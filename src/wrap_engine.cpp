@@ -20,16 +20,17 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** The sample: one vertex in this many along the vertex ids' Z-order curve, even in space. */
-constexpr std::size_t SAMPLE_STRIDE = 64;
+/** The sample that schedules the labels: one vertex in this many. */
+constexpr std::size_t SCHEDULE_STRIDE = 64;
 
-/** Does the wrap of an even sample of the vertices find a single layer (isSingleLayer())? */
+} // namespace
+
 bool
-sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<double>& weights)
+sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<double>& weights, std::size_t stride)
 {
   std::vector<Point3> p;
   std::vector<double> w;
-  for (std::size_t v = 0; v < positions.size (); v += SAMPLE_STRIDE)
+  for (std::size_t v = 0; v < positions.size (); v += stride)
   {
     p.push_back (positions[v]);
     w.push_back (weights[v]);
@@ -47,14 +48,12 @@ sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<dou
   return isSingleLayer (sample.complex (), sample.x ());
 }
 
-} // namespace
-
 bool
 labelAtOnce (Output output, const std::vector<Point3>& positions, const std::vector<double>& weights, StageClock& clock)
 {
   if (output == Output::closed || positions.size () < DefaultSurface::LABEL_ON_DEMAND_FROM)
     return true;
-  const bool single_layer = sampleIsSingleLayer (positions, weights);
+  const bool single_layer = sampleIsSingleLayer (positions, weights, SCHEDULE_STRIDE);
   clock.stageDone ("sample");
   return !single_layer;
 }
@@ -237,8 +236,10 @@ WrapEngine::extractSurface ()
     w_ = extractBoundary (*complex_, *x_, true, inputKey ());
     return; // timed with the report, as the boundary stage
   }
-  DefaultSurface::Output out = surface_->surface (*x_, vertex_positions_, parameters_.output == Output::closed,
-                                                  parameters_.viewpoint, result_.statistics, clock_);
+  DefaultSurface::Output out = surface_->surface (
+      *x_, vertex_positions_, parameters_.output == Output::closed, parameters_.viewpoint,
+      [this] (std::size_t stride) { return sampleIsSingleLayer (vertex_positions_, vertex_weights_, stride); },
+      result_.statistics, clock_);
   surface_.reset ();
   tetrahedra_ = {};
   w_ = std::move (out.w);

@@ -26,6 +26,11 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief Does the wrap of one vertex in \a stride, along the vertex ids' Z-order curve (a sample
+  * even in space), find a single layer (isSingleLayer())? */
+bool
+sampleIsSingleLayer (const std::vector<Point3>& positions, const std::vector<double>& weights, std::size_t stride);
+
 /** \brief Whether the default surface's labels are computed as soon as the tetrahedra are known
   * (the votes before the complex is built, the flood beside the next stages) rather than when the
   * surface needs them: always, but for a large cloud whose even sample's wrap finds a single

@@ -76,6 +76,18 @@ spacing (std::size_t n)
   return 2.0 / std::sqrt (double (n));
 }
 
+/** terrainSample() moved across by Gaussian noise of \a sigma mean spacings. */
+std::vector<Point3>
+noisyTerrain (std::size_t n, unsigned seed, double sigma)
+{
+  std::vector<Point3> terrain = terrainSample (n, seed);
+  std::mt19937_64 random (seed + 5);
+  std::normal_distribution<double> noise (0.0, sigma * spacing (n));
+  for (Point3& p : terrain)
+    p[2] += noise (random);
+  return terrain;
+}
+
 TEST (OpenSheet, SmoothTerrainIsOneDiscFacingUp)
 {
   const std::vector<Point3> terrain = terrainSample (20000, 1);
@@ -92,14 +104,57 @@ TEST (OpenSheet, NoisyTerrainStaysOneSheet)
   // Noise across the layer of a fifth of the spacing: X thickens into tetrahedra here and there,
   // and the sheet passes each thick part on the side with more of its points, with a tent to
   // the points left below it.
-  std::vector<Point3> terrain = terrainSample (20000, 2);
-  std::mt19937_64 random (7);
-  std::normal_distribution<double> noise (0.0, 0.2 * spacing (terrain.size ()));
-  for (Point3& p : terrain)
-    p[2] += noise (random);
+  const std::vector<Point3> terrain = noisyTerrain (20000, 2, 0.2);
   // A thick part may leave a triangle or two apart from the sheet.
   const WrapResult r = expectOpenSheet (terrain, 1, 0.999, WrapParameters (), 2);
   EXPECT_GT (facing (terrain, r)[2], 0.0);
+}
+
+TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
+{
+  // Noise across the layer of about the median spacing (half the mean): X is a sheet torn by
+  // thin solids, and only a sample at a coarser spacing sees one layer. The sheet may pass
+  // through those solids, and a few points stay below it.
+  const std::vector<Point3> terrain = noisyTerrain (20000, 3, 0.5);
+  const WrapResult r = expectOpenSheet (terrain, 1, 0.995, WrapParameters (), 2);
+  EXPECT_GT (facing (terrain, r)[2], 0.0);
+}
+
+TEST (OpenSheet, SlabOfPointsIsOneSheet)
+{
+  // Points spread evenly through a layer one and a half mean spacings thick.
+  std::mt19937_64 random (9);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::vector<Point3> slab (10000);
+  for (Point3& p : slab)
+  {
+    const double x = u (random), y = u (random);
+    p = {x, y, 0.75 * spacing (slab.size ()) * u (random)};
+  }
+  expectOpenSheet (slab, 1, 0.995, WrapParameters (), 2);
+}
+
+TEST (OpenSheet, ThinClosedBoxIsNotASheet)
+{
+  // A box as thin as the spacing, every face sampled: X is a thin solid with few sheets, which a
+  // coarser sample would take for one layer.
+  std::mt19937_64 random (10);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  const std::size_t n = 10000;
+  const double h = std::sqrt (1.0 / n); // two unit faces
+  std::vector<Point3> box;
+  for (std::size_t i = 0; i < n; ++i)
+    box.push_back ({u (random), u (random), i % 2 == 0 ? 0.0 : h});
+  for (std::size_t i = 0; i < std::size_t (4 / h); ++i)
+  {
+    const double a = u (random), z = h * u (random);
+    const Point3 sides[4] = {{a, 0, z}, {a, 1, z}, {0, a, z}, {1, a, z}};
+    box.push_back (sides[i % 4]);
+  }
+  const WrapResult r = computeWrap (box);
+  EXPECT_FALSE (r.statistics.single_layer);
+  EXPECT_TRUE (describeSurface (trianglesOf (r)).closed_manifold);
+  EXPECT_GE (double (pointsOnSurface (r, box.size ()).size ()), 0.999 * double (box.size ()));
 }
 
 TEST (OpenSheet, CliffAndOverhangStayOneSheet)

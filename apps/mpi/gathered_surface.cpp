@@ -203,7 +203,10 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
     return;
   }
 
-  detail::DefaultSurface::Output out = stage->surface (x, positions, false, file.viewpoint, result.statistics, clock);
+  detail::DefaultSurface::Output out = stage->surface (
+      x, positions, false, file.viewpoint,
+      [&] (std::size_t stride) { return detail::sampleIsSingleLayer (positions, weights, stride); }, result.statistics,
+      clock);
   if (out.split)
     indices.takeSplit (*out.split, out.w, file.points.size (), result);
   result.surface = indices.surface (out.w);

@@ -84,11 +84,20 @@ DefaultSurface::labelsFor (const Subcomplex& x)
 
 DefaultSurface::Output
 DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
-                         const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock)
+                         const std::optional<Point3>& viewpoint, const SampleIsSingleLayer& sample_is_single_layer,
+                         WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
   std::optional<SolidLabels> known;
   bool single_layer = isSingleLayer (complex, x);
+  // A layer with noise across it: X is a sheet torn by thin solids, which a coarser sample does
+  // not resolve. The sheet may then pass through those solids too.
+  bool noisy = false;
+  if (!single_layer && complex.numVertices () >= NOISY_LAYER_FROM && isPartlySheet (complex, x))
+  {
+    single_layer = noisy = sample_is_single_layer (NOISY_LAYER_STRIDE);
+    clock.stageDone ("layer sample");
+  }
   if (single_layer && complex.numVertices () < LABEL_ON_DEMAND_FROM)
   {
     known = labelsFor (x);
@@ -100,9 +109,12 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     // only turn a sheet with no up or down, if there is one.
     stats.single_layer = true;
     Output out;
+    Boundary candidates = extractBoundary (complex, x, false);
+    if (noisy)
+      addInnerTriangles (complex, x, candidates);
     out.w = openSheet (
-        adjacency_, extractBoundary (complex, x, false), positions,
-        [&] { return known ? known->inside : labelsFor (x).inside; }, viewpoint);
+        adjacency_, std::move (candidates), positions, [&] { return known ? known->inside : labelsFor (x).inside; },
+        viewpoint);
     clock.stageDone ("sheet");
     return out;
   }

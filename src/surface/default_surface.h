@@ -15,6 +15,7 @@
 #include <tbb/task_group.h>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -35,6 +36,16 @@ public:
     * and a single layer whose votes enclose nothing (a few points, a box's corners around its
     * centre) is its convex hull rather than a sheet. */
   static constexpr std::size_t LABEL_ON_DEMAND_FROM = 200000;
+
+  /** \brief Where X is partly a sheet (isPartlySheet()), the points are also a single layer when
+    * the wrap of one vertex in this many is: on a layer, a sample at four times the spacing, over
+    * which noise of a spacing is a quarter of one. From this many points on (a sample of 256). */
+  static constexpr std::size_t NOISY_LAYER_STRIDE = 16;
+  static constexpr std::size_t NOISY_LAYER_FROM = 256 * NOISY_LAYER_STRIDE;
+
+  /** \brief Does the wrap of one vertex in the given number (along the vertex ids) find a single
+    * layer? */
+  using SampleIsSingleLayer = std::function<bool (std::size_t stride)>;
 
   /** \brief With \a label_now, the votes on all threads, then the flood as a task beside the
     * caller's next stages; otherwise nothing until surface() needs the labels.
@@ -62,9 +73,11 @@ public:
     * "repair" (or "sheet") on \a clock and what it did in \a stats.
     * \param[in] positions per vertex
     * \param[in] closed a single layer as a closed two-sided shell rather than an open sheet
-    * \param[in] viewpoint where an open sheet faces, if given (openSheet()) */
+    * \param[in] viewpoint where an open sheet faces, if given (openSheet())
+    * \param[in] sample_is_single_layer asked only for a cloud that X leaves in doubt */
   Output surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
-                  const std::optional<Point3>& viewpoint, WrapStatistics& stats, StageClock& clock);
+                  const std::optional<Point3>& viewpoint, const SampleIsSingleLayer& sample_is_single_layer,
+                  WrapStatistics& stats, StageClock& clock);
 
 private:
   /** The labels, from the flood started by the constructor or, if none was, from one run now. */

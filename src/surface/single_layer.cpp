@@ -14,19 +14,43 @@
 namespace pcl_wrap::detail
 {
 
+namespace
+{
+
+/** X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2). */
+std::size_t
+trianglesOn (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t tetrahedra)
+{
+  return countInParallel (complex.size (2), [&] (std::size_t f) {
+    const Simplex triangle{2, static_cast<SimplexId> (f)};
+    return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
+  });
+}
+
+} // namespace
+
 bool
 isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x)
 {
-  if (complex.dimension () != 3)
-    return false;
-  // X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2).
-  const auto trianglesOn = [&] (std::uint32_t tetrahedra) {
-    return countInParallel (complex.size (2), [&] (std::size_t f) {
-      const Simplex triangle{2, static_cast<SimplexId> (f)};
-      return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
-    });
-  };
-  return trianglesOn (0) > trianglesOn (1); // sheet triangles against bounding ones
+  return complex.dimension () == 3 && trianglesOn (complex, x, 0) > trianglesOn (complex, x, 1);
+}
+
+bool
+isPartlySheet (const SimplicialComplex& complex, const Subcomplex& x)
+{
+  return complex.dimension () == 3 && 2 * trianglesOn (complex, x, 0) >= trianglesOn (complex, x, 1);
+}
+
+void
+addInnerTriangles (const SimplicialComplex& complex, const Subcomplex& x, Boundary& w)
+{
+  for (SimplexId f = 0; f < complex.size (2); ++f)
+    if (x.contains ({2, f}) && x.cofaceCount ({2, f}) == 2)
+    {
+      const std::uint32_t* v = complex.vertices (2, f);
+      w.triangles.push_back ({v[0], v[1], v[2]});
+      w.triangle_ids.push_back (f);
+    }
 }
 
 std::size_t

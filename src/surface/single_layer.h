@@ -26,6 +26,18 @@ namespace pcl_wrap::detail
 bool
 isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x);
 
+/** \brief Is X at least partly a sheet: has it at least half as many triangles on no tetrahedron
+  * of X as on one (a third of its surface)? Noise of about a spacing across a single layer leaves
+  * X a sheet torn by thin solids, where the noise took points off the layer; on a closed object,
+  * noisy or not, X's sheets are a few per cent of its surface. */
+bool
+isPartlySheet (const SimplicialComplex& complex, const Subcomplex& x);
+
+/** \brief Appends to \a w X's triangles inside it, between two of its tetrahedra, as the complex
+  * lists their vertices: with W's, every triangle of X. */
+void
+addInnerTriangles (const SimplicialComplex& complex, const Subcomplex& x, Boundary& w);
+
 /** \brief The number of distinct vertices of \a triangles. */
 std::size_t
 verticesOn (const std::vector<std::array<std::uint32_t, 3>>& triangles);
