@@ -69,6 +69,21 @@ expectOpenSheet (const std::vector<Point3>& points, std::size_t components, doub
   return r;
 }
 
+/** The closed output of \a points is a single layer's two-sided shell: a closed, oriented
+  * 2-manifold. */
+WrapResult
+expectTwoSidedShell (const std::vector<Point3>& points)
+{
+  WrapParameters closed;
+  closed.output = Output::closed;
+  const WrapResult r = computeWrap (points, closed);
+  EXPECT_TRUE (r.statistics.single_layer);
+  const SurfaceReport s = describeSurface (trianglesOf (r));
+  EXPECT_TRUE (s.closed_manifold);
+  EXPECT_TRUE (s.consistently_oriented);
+  return r;
+}
+
 /** Median spacing of a uniform sample of n points over [-1, 1]^2. */
 double
 spacing (std::size_t n)
@@ -118,6 +133,9 @@ TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
   const std::vector<Point3> terrain = noisyTerrain (20000, 3, 0.5);
   const WrapResult r = expectOpenSheet (terrain, 1, 0.995, WrapParameters (), 2);
   EXPECT_GT (facing (terrain, r)[2], 0.0);
+  // Closed, it is the two-sided shell around X.
+  const WrapResult shell = expectTwoSidedShell (terrain);
+  EXPECT_GE (double (pointsOnSurface (shell, terrain.size ()).size ()), 0.995 * double (terrain.size ()));
 }
 
 TEST (OpenSheet, SlabOfPointsIsOneSheet)
@@ -275,14 +293,7 @@ TEST (OpenSheet, OneSidedScanOfATorusIsOneRing)
 
 TEST (OpenSheet, ClosedOutputKeepsTheTwoSidedShell)
 {
-  const std::vector<Point3> terrain = terrainSample (3000, 6);
-  WrapParameters closed;
-  closed.output = Output::closed;
-  const WrapResult r = computeWrap (terrain, closed);
-  EXPECT_TRUE (r.statistics.single_layer);
-  const SurfaceReport s = describeSurface (trianglesOf (r));
-  EXPECT_TRUE (s.closed_manifold);
-  EXPECT_TRUE (s.consistently_oriented);
+  const WrapResult r = expectTwoSidedShell (terrainSample (3000, 6));
   EXPECT_FALSE (r.copies.empty ()) << "points copied per side";
 }
 

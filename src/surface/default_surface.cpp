@@ -118,6 +118,16 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     clock.stageDone ("sheet");
     return out;
   }
+  if (noisy && closed)
+  {
+    // The labelled solid of a noisy layer is the solid in pieces, with handles, that the sample
+    // told apart: the two-sided shell alone is asked.
+    stats.single_layer = true;
+    TwoSidedShell shell = twoSidedShell (adjacency_, positions, x);
+    stats.bridge_simplices = shell.bridges;
+    clock.stageDone ("shell");
+    return {std::move (shell.w), std::move (shell.split)};
+  }
   SolidLabels labels = known ? std::move (*known) : labelsFor (x);
   clock.stageDone ("labelling");
   // Points that sample a volume (a grid, a thick noisy shell) lie mostly inside the solid, where
