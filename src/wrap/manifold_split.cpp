@@ -94,7 +94,7 @@ nonCrossingMatchings (std::vector<int>& open, std::vector<std::pair<int, int>>& 
   }
 }
 
-/** glueAroundEdge()'s lists, reused from edge to edge. */
+/** facesAroundEdge()'s lists, reused from edge to edge. */
 struct AroundEdge
 {
   std::vector<Step> steps;
@@ -103,17 +103,14 @@ struct AroundEdge
   std::vector<std::uint32_t> around;  // the faces, in rotation order
 };
 
-/** Glues the faces on the pinch edge (a, b) (a < b) pairwise, in the rotation order of the
-  * tetrahedra of Del S around it (docs/design.md §8). First each face is glued to the one across
-  * the outside, as on the boundary of a thickened X: parts of X that touch along the edge stay
-  * joined there, and a sheet continues through the edge with one face per side. \a choice 1
-  * glues each face to the one across X instead (the parts come apart, a sheet folds back on
-  * itself), and higher choices every other way to glue them without crossing. */
-template <class Glue>
+/** The faces on the pinch edge (a, b) (a < b) in the rotation order of the tetrahedra of Del S
+  * around it (docs/design.md §8), into \a scratch.around: it starts with a face looking back, so
+  * that pairs (0, 1), (2, 3)... are across X and pairs (1, 2), ..., (2k - 1, 0) across the
+  * outside. */
 void
-glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
-                const std::vector<SimplexId>& tets, const std::vector<std::uint32_t>& faces_here,
-                const std::vector<Face>& faces, unsigned choice, const Glue& glue, AroundEdge& scratch)
+facesAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t a, std::uint32_t b,
+                 const std::vector<SimplexId>& tets, const std::vector<std::uint32_t>& faces_here,
+                 const std::vector<Face>& faces, AroundEdge& scratch)
 {
   std::vector<Step>& steps = scratch.steps;
   steps.clear ();
@@ -177,7 +174,18 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
   // pairs (1,2), ..., (2k-1,0) across the outside.
   if (!around.empty () && !traverses (faces[around[0]], b, a))
     std::rotate (around.begin (), around.begin () + 1, around.end ());
-  const int k2 = static_cast<int> (around.size ());
+}
+
+/** Glues the \a k2 faces \a around a pinch edge (in rotation order, facesAroundEdge()) pairwise.
+  * First each face is glued to the one across the outside, as on the boundary of a thickened X:
+  * parts of X that touch along the edge stay joined there, and a sheet continues through the
+  * edge with one face per side. \a choice 1 glues each face to the one across X instead (the
+  * parts come apart, a sheet folds back on itself), and higher choices every other way to glue
+  * them without crossing. */
+template <class Glue>
+void
+glueAroundEdge (const std::uint32_t* around, int k2, unsigned choice, const Glue& glue)
+{
   // The pair from face i (even) across X, or from face i + 1 across the outside.
   const auto pairAt = [k2] (int i, bool across_x) {
     return across_x ? std::pair<int, int> (i, i + 1) : std::pair<int, int> (i + 1, (i + 2) % k2);
@@ -208,14 +216,17 @@ glueAroundEdge (const SimplicialComplex& complex, const Subcomplex& x, std::uint
 
 /** What split() reads that does not depend on the choices: W's faces (a sheet triangle once per
   * side), their uses of each undirected edge, and the pinch edges (more than two faces), with the
-  * tetrahedra around each of a 3-dimensional complex. */
+  * faces around each of a 3-dimensional complex in rotation order. */
 struct Faces
 {
   std::vector<Face> faces;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> uses; // (edge key, face), ascending
   std::vector<std::size_t> manifold;                         // the first of an edge's two uses
   std::vector<std::pair<std::size_t, std::size_t>> pinches;  // [lo, hi) of uses, in ascending key order
-  std::vector<std::vector<SimplexId>> tets_around;           // per pinch edge, in a 3-dimensional complex
+  /** In a 3-dimensional complex, per pinch edge p its faces in rotation order (facesAroundEdge()):
+    * around[around_begin[p] .. around_begin[p + 1]). */
+  std::vector<std::size_t> around_begin;
+  std::vector<std::uint32_t> around;
   std::size_t sheet_triangles = 0;
 };
 
@@ -267,14 +278,30 @@ facesOf (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& 
   }
   if (complex.dimension () == 3 && !out.pinches.empty ())
   {
-    out.tets_around.resize (out.pinches.size ());
+    std::vector<std::vector<SimplexId>> tets_around (out.pinches.size ());
     for (SimplexId t = 0; t < complex.size (3); ++t)
       for (unsigned mask : {3u, 5u, 6u, 9u, 10u, 12u})
       {
         const std::uint32_t slot = pinch_slot[complex.face (3, t, mask).id];
         if (slot != NONE)
-          out.tets_around[slot].push_back (t);
+          tets_around[slot].push_back (t);
       }
+    // The rotation around each pinch edge does not depend on the choices: found once.
+    std::vector<std::uint32_t> here;
+    AroundEdge scratch;
+    out.around_begin.push_back (0);
+    for (std::size_t p = 0; p < out.pinches.size (); ++p)
+    {
+      const auto [lo, hi] = out.pinches[p];
+      const auto [a, b] = edgeEnds (uses[lo].first);
+      here.clear ();
+      for (std::size_t k = lo; k < hi; ++k)
+        here.push_back (uses[k].second);
+      facesAroundEdge (complex, x, a, b, tets_around[p], here, faces, scratch);
+      std::vector<SimplexId> ().swap (tets_around[p]);
+      out.around.insert (out.around.end (), scratch.around.begin (), scratch.around.end ());
+      out.around_begin.push_back (out.around.size ());
+    }
   }
   return out;
 }
@@ -282,7 +309,7 @@ facesOf (const SimplicialComplex& complex, const Subcomplex& x, const Boundary& 
 /** The faces \a in glued along every edge, each pinch edge the way \a choice says (see
   * glueAroundEdge), then one vertex per fan. */
 ManifoldSplit
-split (const SimplicialComplex& complex, const Subcomplex& x, const Faces& in, const std::vector<unsigned>& choice)
+split (const SimplicialComplex& complex, const Faces& in, const std::vector<unsigned>& choice)
 {
   ManifoldSplit out;
   const std::vector<Face>& faces = in.faces;
@@ -301,8 +328,6 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Faces& in, c
     const auto [a, b] = edgeEnds (uses[lo].first);
     glueAlong (a, b) (uses[lo].second, uses[lo + 1].second);
   }
-  std::vector<std::uint32_t> here;
-  AroundEdge scratch;
   for (std::size_t p = 0; p < in.pinches.size (); ++p)
   {
     const auto [lo, hi] = in.pinches[p];
@@ -322,10 +347,8 @@ split (const SimplicialComplex& complex, const Subcomplex& x, const Faces& in, c
         }
       continue;
     }
-    here.clear ();
-    for (std::size_t k = lo; k < hi; ++k)
-      here.push_back (uses[k].second);
-    glueAroundEdge (complex, x, a, b, in.tets_around[p], here, faces, choice_here, glueAlong (a, b), scratch);
+    glueAroundEdge (&in.around[in.around_begin[p]], static_cast<int> (in.around_begin[p + 1] - in.around_begin[p]),
+                    choice_here, glueAlong (a, b));
   }
 
   // One vertex per fan: the first fan met keeps the vertex, every other gets a copy.
@@ -365,13 +388,16 @@ edgeKey (std::uint32_t a, std::uint32_t b)
   return (std::uint64_t (std::min (a, b)) << 32) | std::max (a, b);
 }
 
-std::vector<std::uint64_t>
-nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles)
+namespace
 {
-  std::vector<std::uint64_t> directed, bad;
-  for (const auto& t : triangles)
-    for (int i = 0; i < 3; ++i)
-      directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
+
+/** The undirected keys of the edges in \a directed (each directed edge of some triangles, as
+  * (from << 32) | to) on which those triangles are not a 2-manifold: an edge traversed twice the
+  * same way, or one way only. */
+std::vector<std::uint64_t>
+badEdges (std::vector<std::uint64_t>& directed)
+{
+  std::vector<std::uint64_t> bad;
   std::sort (directed.begin (), directed.end ());
   for (std::size_t i = 0; i < directed.size (); ++i)
   {
@@ -381,6 +407,32 @@ nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles)
       bad.push_back (std::min (directed[i], reverse));
   }
   return bad;
+}
+
+/** nonManifoldEdges() of a split's triangles, of those edges alone that have an end whose
+  * original vertex is flagged in \a near: every triangle on such an edge has that end. */
+std::vector<std::uint64_t>
+nonManifoldEdgesNear (const ManifoldSplit& split, std::uint32_t n, const std::vector<std::uint8_t>& near)
+{
+  const auto flagged = [&] (std::uint32_t v) { return near[v < n ? v : split.copy_of[v - n]] != 0; };
+  std::vector<std::uint64_t> directed;
+  for (const auto& t : split.triangles)
+    for (int i = 0; i < 3; ++i)
+      if (flagged (t[i]) || flagged (t[(i + 1) % 3]))
+        directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
+  return badEdges (directed);
+}
+
+} // namespace
+
+std::vector<std::uint64_t>
+nonManifoldEdges (const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  std::vector<std::uint64_t> directed;
+  for (const auto& t : triangles)
+    for (int i = 0; i < 3; ++i)
+      directed.push_back ((std::uint64_t (t[i]) << 32) | t[(i + 1) % 3]);
+  return badEdges (directed);
 }
 
 ManifoldSplit
@@ -395,15 +447,19 @@ splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Bound
   // Where several pinch edges meet at a vertex, their gluings interact, and an edge with more
   // than four faces has more ways to be glued: an edge still bad tries its next way. A few
   // rounds settle every input tried; the bound guards against cycling.
+  // A round changes the gluing only at the two ends of the edges it flips; elsewhere the surface
+  // is the same as before, and as much a 2-manifold: the next round checks near those ends alone.
   const Faces faces = facesOf (complex, x, w); // the same in every round
+  const std::uint32_t n = complex.numVertices ();
   std::vector<unsigned> choice (faces.pinches.size (), 0);
+  std::vector<std::uint8_t> flipped_at; // per vertex: an end of an edge the last round flipped
   for (int round = 0; round < 64; ++round)
   {
-    ManifoldSplit out = split (complex, x, faces, choice);
-    const std::vector<std::uint64_t> bad = nonManifoldEdges (out.triangles);
+    ManifoldSplit out = split (complex, faces, choice);
+    const std::vector<std::uint64_t> bad =
+        round == 0 ? nonManifoldEdges (out.triangles) : nonManifoldEdgesNear (out, n, flipped_at);
     if (bad.empty ())
       return out;
-    const std::uint32_t n = complex.numVertices ();
     const auto original = [&] (std::uint32_t v) { return v < n ? v : out.copy_of[v - n]; };
     std::vector<std::size_t> to_change;
     for (std::uint64_t e : bad)
@@ -421,8 +477,13 @@ splitPinches (const SimplicialComplex& complex, const Subcomplex& x, const Bound
     }
     std::sort (to_change.begin (), to_change.end ());
     to_change.erase (std::unique (to_change.begin (), to_change.end ()), to_change.end ());
+    flipped_at.assign (n, 0);
     for (std::size_t i : to_change)
+    {
       ++choice[i];
+      for (std::uint32_t v : edgeEnds (faces.uses[faces.pinches[i].first].first))
+        flipped_at[v] = 1;
+    }
   }
   throw std::logic_error ("splitPinches: the split surface is not a 2-manifold");
 }
