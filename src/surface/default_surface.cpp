@@ -89,11 +89,12 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
 {
   const SimplicialComplex& complex = adjacency_.complex ();
   std::optional<SolidLabels> known;
-  bool single_layer = isSingleLayer (complex, x);
+  const LayerTriangles layer = layerTriangles (complex, x);
+  bool single_layer = layer.singleLayer ();
   // A layer with noise across it: X is a sheet torn by thin solids, which a coarser sample does
   // not resolve. The sheet may then pass through those solids too.
   bool noisy = false;
-  if (!single_layer && complex.numVertices () >= NOISY_LAYER_FROM && isPartlySheet (complex, x))
+  if (!single_layer && complex.numVertices () >= NOISY_LAYER_FROM && layer.partlySheet ())
   {
     single_layer = noisy = sample_is_single_layer (NOISY_LAYER_STRIDE);
     clock.stageDone ("layer sample");

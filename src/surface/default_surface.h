@@ -37,7 +37,7 @@ public:
     * centre) is its convex hull rather than a sheet. */
   static constexpr std::size_t LABEL_ON_DEMAND_FROM = 200000;
 
-  /** \brief Where X is partly a sheet (isPartlySheet()), the points are also a single layer when
+  /** \brief Where X is partly a sheet (LayerTriangles::partlySheet()), the points are also a single layer when
     * the wrap of one vertex in this many is: on a layer, a sample at four times the spacing, over
     * which noise of a spacing is a quarter of one. From this many points on (a sample of 256). */
   static constexpr std::size_t NOISY_LAYER_STRIDE = 16;

@@ -14,31 +14,25 @@
 namespace pcl_wrap::detail
 {
 
-namespace
+LayerTriangles
+layerTriangles (const SimplicialComplex& complex, const Subcomplex& x)
 {
-
-/** X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2). */
-std::size_t
-trianglesOn (const SimplicialComplex& complex, const Subcomplex& x, std::uint32_t tetrahedra)
-{
-  return countInParallel (complex.size (2), [&] (std::size_t f) {
-    const Simplex triangle{2, static_cast<SimplexId> (f)};
-    return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
-  });
+  if (complex.dimension () != 3)
+    return {};
+  // X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2).
+  const auto trianglesOn = [&] (std::uint32_t tetrahedra) {
+    return countInParallel (complex.size (2), [&] (std::size_t f) {
+      const Simplex triangle{2, static_cast<SimplexId> (f)};
+      return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
+    });
+  };
+  return {trianglesOn (0), trianglesOn (1)};
 }
-
-} // namespace
 
 bool
 isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x)
 {
-  return complex.dimension () == 3 && trianglesOn (complex, x, 0) > trianglesOn (complex, x, 1);
-}
-
-bool
-isPartlySheet (const SimplicialComplex& complex, const Subcomplex& x)
-{
-  return complex.dimension () == 3 && 2 * trianglesOn (complex, x, 0) >= trianglesOn (complex, x, 1);
+  return layerTriangles (complex, x).singleLayer ();
 }
 
 void

@@ -18,20 +18,32 @@
 namespace pcl_wrap::detail
 {
 
-/** \brief Is the sample a single layer, with no volume behind it (a terrain, a scan seen from one
-  * side)? Then Wrap's flow has collapsed the space under the points, and X is the layer itself
-  * (the paper's Figure 3): most of its triangles are faces of none of its tetrahedra. On a closed
-  * object X is a solid, and nearly all of its triangles that are not inside it bound it: the
-  * sample is a single layer when X has more triangles on no tetrahedron of X than on one. */
+/** \brief X's triangles on none of its tetrahedra (a sheet's) and on one (bounding a solid). */
+struct LayerTriangles
+{
+  std::size_t sheet = 0, bounding = 0;
+
+  /** \brief Is the sample a single layer, with no volume behind it (a terrain, a scan seen from
+    * one side)? Then Wrap's flow has collapsed the space under the points, and X is the layer
+    * itself (the paper's Figure 3): most of its triangles are faces of none of its tetrahedra. On
+    * a closed object X is a solid, and nearly all of its triangles that are not inside it bound
+    * it: the sample is a single layer when X has more sheet triangles than bounding ones. */
+  bool singleLayer () const { return sheet > bounding; }
+
+  /** \brief Is X at least partly a sheet: half as many sheet triangles as bounding ones or more
+    * (a third of its surface)? Noise of about a spacing across a single layer leaves X a sheet
+    * torn by thin solids, where the noise took points off the layer; on a closed object, noisy or
+    * not, X's sheets are a few per cent of its surface. */
+  bool partlySheet () const { return 2 * sheet >= bounding; }
+};
+
+/** \brief X's sheet and bounding triangles; none where the complex is not 3-dimensional. */
+LayerTriangles
+layerTriangles (const SimplicialComplex& complex, const Subcomplex& x);
+
+/** \brief layerTriangles (complex, x).singleLayer (). */
 bool
 isSingleLayer (const SimplicialComplex& complex, const Subcomplex& x);
-
-/** \brief Is X at least partly a sheet: has it at least half as many triangles on no tetrahedron
-  * of X as on one (a third of its surface)? Noise of about a spacing across a single layer leaves
-  * X a sheet torn by thin solids, where the noise took points off the layer; on a closed object,
-  * noisy or not, X's sheets are a few per cent of its surface. */
-bool
-isPartlySheet (const SimplicialComplex& complex, const Subcomplex& x);
 
 /** \brief Appends to \a w X's triangles inside it, between two of its tetrahedra, as the complex
   * lists their vertices: with W's, every triangle of X. */
