@@ -138,6 +138,13 @@ TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
   EXPECT_GE (double (pointsOnSurface (shell, terrain.size ()).size ()), 0.995 * double (terrain.size ()));
 }
 
+TEST (OpenSheet, SmallTerrainWithNoiseOfASpacingIsOneSheet)
+{
+  // 2,000 points: the sample is one point in 7, still 256 of them.
+  const std::vector<Point3> terrain = noisyTerrain (2000, 4, 0.5);
+  expectOpenSheet (terrain, 1, 0.99, WrapParameters (), 2);
+}
+
 TEST (OpenSheet, SlabOfPointsIsOneSheet)
 {
   // Points spread evenly through a layer one and a half mean spacings thick.

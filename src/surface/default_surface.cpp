@@ -94,9 +94,10 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   // A layer with noise across it: X is a sheet torn by thin solids, which a coarser sample does
   // not resolve. The sheet may then pass through those solids too.
   bool noisy = false;
-  if (!single_layer && complex.numVertices () >= NOISY_LAYER_FROM && layer.partlySheet ())
+  const std::size_t stride = noisyLayerStride (complex.numVertices ());
+  if (!single_layer && stride > 0 && layer.partlySheet ())
   {
-    single_layer = noisy = sample_is_single_layer (NOISY_LAYER_STRIDE);
+    single_layer = noisy = sample_is_single_layer (stride);
     clock.stageDone ("layer sample");
   }
   if (single_layer && complex.numVertices () < LABEL_ON_DEMAND_FROM)

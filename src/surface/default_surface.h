@@ -14,6 +14,7 @@
 
 #include <tbb/task_group.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -37,11 +38,18 @@ public:
     * centre) is its convex hull rather than a sheet. */
   static constexpr std::size_t LABEL_ON_DEMAND_FROM = 200000;
 
-  /** \brief Where X is partly a sheet (LayerTriangles::partlySheet()), the points are also a single layer when
-    * the wrap of one vertex in this many is: on a layer, a sample at four times the spacing, over
-    * which noise of a spacing is a quarter of one. From this many points on (a sample of 256). */
-  static constexpr std::size_t NOISY_LAYER_STRIDE = 16;
-  static constexpr std::size_t NOISY_LAYER_FROM = 256 * NOISY_LAYER_STRIDE;
+  /** \brief Where X is partly a sheet (LayerTriangles::partlySheet()), the points are also a
+    * single layer when the wrap of one vertex in NOISY_LAYER_STRIDE is: on a layer, a sample at
+    * four times the spacing, over which noise of a spacing is a quarter of one. A cloud of fewer
+    * than 256 times that many points is sampled more densely, to keep 256 points, but one vertex
+    * in 4 at most (noise of a spacing is half the sample's); one of fewer than 1,024 is not. */
+  static constexpr std::size_t NOISY_LAYER_STRIDE = 16, NOISY_LAYER_SAMPLE = 256, NOISY_LAYER_DENSEST = 4;
+
+  /** \brief The stride of the sample that judges a noisy layer of \a n points; 0 when none does. */
+  static constexpr std::size_t noisyLayerStride (std::size_t n)
+  {
+    return n < NOISY_LAYER_DENSEST * NOISY_LAYER_SAMPLE ? 0 : std::min (NOISY_LAYER_STRIDE, n / NOISY_LAYER_SAMPLE);
+  }
 
   /** \brief Does the wrap of one vertex in the given number (along the vertex ids) find a single
     * layer? */
