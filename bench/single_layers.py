@@ -5,15 +5,15 @@
 usage: bench/single_layers.py WORK_DIR [--pictures data/pictures] [--out bench/single_layers.md]
                               [--cli build/apps/pcl_wrap]
 
-Generates a smooth and a rough terrain, a terrain with a steep cliff, a city tile (ground and
-boxes of buildings seen from above), a one-sided scan of a half sphere and a depth image of a
-bumpy wall, runs `pcl_wrap` (default and --closed) on each, and prints a Markdown table:
-2-manifold (every edge on one or two triangles, every vertex one fan), open (some edge on one
-triangle only), consistently oriented,
-duplicate triangles, pieces, holes (boundary loops besides the longest of each piece), share of
-the points on the surface, points copied, which way it faces, time. With --pictures DIR, draws the raw W
-and the default surface side by side, seen obliquely, with pcl_viewer as DIR/single_layer_NAME.png. With --out, writes
-the table as a section of BENCHMARK.md (bench/compare.py puts it there)."""
+Generates a smooth and a rough terrain, a terrain with noise of a spacing, one with a steep cliff, a
+city tile (ground and boxes of buildings seen from above), a one-sided scan of a half sphere and a
+depth image of a bumpy wall, runs `pcl_wrap` (default and --closed) on each, and prints a Markdown
+table: 2-manifold (every edge on one or two triangles, every vertex one fan), open (some edge on one
+triangle only), consistently oriented, duplicate triangles, pieces, holes (boundary loops besides
+the longest of each piece), share of the points on the surface, points copied, which way it faces,
+time. With --pictures DIR, draws the raw W and the default surface side by side, seen obliquely,
+with pcl_viewer as DIR/single_layer_NAME.png. With --out, writes the table as a section of
+BENCHMARK.md (bench/compare.py puts it there)."""
 import argparse
 import collections
 import os
@@ -27,11 +27,14 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def terrain(n, rng, rough=False):
+def terrain(n, rng, rough=False, noise=0.0):
+    """With noise, Gaussian noise in z of that many mean spacings (half as many median ones)."""
     xy = rng.uniform(-1, 1, (n, 2))
     z = 0.2 * np.sin(3 * xy[:, 0]) * np.cos(2 * xy[:, 1])
     if rough:
         z += 0.02 * np.sin(40 * xy[:, 0]) * np.cos(37 * xy[:, 1]) + rng.normal(0, 0.2 * 2 / np.sqrt(n), n)
+    if noise:
+        z += rng.normal(0, noise * 2 / np.sqrt(n), n)
     return np.c_[xy, z]
 
 
@@ -93,6 +96,7 @@ def depth_image(rng):
 CASES = [
     ("terrain", lambda rng: terrain(50000, rng)),
     ("rough_terrain", lambda rng: terrain(50000, rng, rough=True)),
+    ("noisy_terrain", lambda rng: terrain(50000, rng, noise=0.5)),
     ("cliff", lambda rng: cliff(50000, rng)),
     ("city_tile", lambda rng: city(60000, rng)),
     ("half_sphere", lambda rng: half_sphere(50000, rng)),
@@ -247,9 +251,10 @@ def main():
     print("\n".join(rows))
     if args.out:
         lines = ["## Single layers", "",
-                 "Terrains, a cliff, a city tile seen from above, a one-sided scan of a half sphere and a depth",
-                 "image: the default output (one open sheet) and `--closed` (the two-sided shell), checked as a",
-                 "user would (bench/single_layers.py). Holes: boundary loops besides each piece's outer one.",
+                 "Terrains (smooth, rough, with noise of a spacing), a cliff, a city tile seen from above, a",
+                 "one-sided scan of a half sphere and a depth image: the default output (one open sheet) and",
+                 "`--closed` (the two-sided shell), checked as a user would (bench/single_layers.py). Holes:",
+                 "boundary loops besides each piece's outer one.",
                  "Faces: the axis of the summed area normal. Reproduce: `scripts/build.sh && bench/single_layers.py",
                  "/tmp/single_layers --pictures data/pictures --out bench/single_layers.md`.", ""] + rows
         if args.pictures:
