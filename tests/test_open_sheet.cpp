@@ -145,6 +145,34 @@ TEST (OpenSheet, SmallTerrainWithNoiseOfASpacingIsOneSheet)
   expectOpenSheet (terrain, 1, 0.99, WrapParameters (), 2);
 }
 
+TEST (OpenSheet, NoisyDomeAndWallAreSheets)
+{
+  // Noise of about a median spacing across a dome (the upper half of the unit sphere) and across
+  // a vertical wall with no viewpoint: each is one sheet, whichever way it faces.
+  std::mt19937_64 random (11);
+  const std::size_t n = 10000;
+  std::vector<Point3> dome;
+  for (const Point3& p : sphereSample (2 * n, 12, 0.0))
+    if (p[2] > 0.0)
+      dome.push_back (p);
+  std::normal_distribution<double> radial (0.0, 0.5 * std::sqrt (2 * M_PI / double (dome.size ())));
+  for (Point3& p : dome)
+  {
+    const double s = 1.0 + radial (random);
+    p = {s * p[0], s * p[1], s * p[2]};
+  }
+  expectOpenSheet (dome, 1, 0.995, WrapParameters (), 2);
+  std::uniform_real_distribution<double> u (-1.0, 1.0);
+  std::normal_distribution<double> across (0.0, 0.5 * spacing (n));
+  std::vector<Point3> wall (n);
+  for (Point3& p : wall)
+  {
+    const double x = u (random), z = u (random);
+    p = {x, across (random), z};
+  }
+  expectOpenSheet (wall, 1, 0.995, WrapParameters (), 2);
+}
+
 TEST (OpenSheet, SlabOfPointsIsOneSheet)
 {
   // Points spread evenly through a layer one and a half mean spacings thick.
