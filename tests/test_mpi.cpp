@@ -330,11 +330,7 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnASingleLayerAndOddInput)
   expectIdenticalSurface (writeCloud ("terrain_surface", test::terrainSample (3000, 4)), {1, 3});
   // Noise of about a spacing across the layer: a sample of the points, the same in every
   // process, tells it from a solid.
-  std::vector<Point3> noisy = test::terrainSample (6000, 21);
-  std::mt19937 across (22);
-  std::normal_distribution<double> noise (0.0, 1.0 / std::sqrt (6000.0));
-  for (Point3& p : noisy)
-    p[2] += noise (across);
+  const std::vector<Point3> noisy = test::noisyTerrainSample (6000, 21, 0.5);
   const WrapStatistics judged = computeWrap (noisy).statistics;
   ASSERT_TRUE (judged.single_layer && std::any_of (judged.timings.begin (), judged.timings.end (),
                                                    [] (const StageTiming& t) { return t.stage == "layer sample"; }));

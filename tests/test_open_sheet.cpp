@@ -91,18 +91,6 @@ spacing (std::size_t n)
   return 2.0 / std::sqrt (double (n));
 }
 
-/** terrainSample() moved across by Gaussian noise of \a sigma mean spacings. */
-std::vector<Point3>
-noisyTerrain (std::size_t n, unsigned seed, double sigma)
-{
-  std::vector<Point3> terrain = terrainSample (n, seed);
-  std::mt19937_64 random (seed + 5);
-  std::normal_distribution<double> noise (0.0, sigma * spacing (n));
-  for (Point3& p : terrain)
-    p[2] += noise (random);
-  return terrain;
-}
-
 TEST (OpenSheet, SmoothTerrainIsOneDiscFacingUp)
 {
   const std::vector<Point3> terrain = terrainSample (20000, 1);
@@ -119,7 +107,7 @@ TEST (OpenSheet, NoisyTerrainStaysOneSheet)
   // Noise across the layer of a fifth of the spacing: X thickens into tetrahedra here and there,
   // and the sheet passes each thick part on the side with more of its points, with a tent to
   // the points left below it.
-  const std::vector<Point3> terrain = noisyTerrain (20000, 2, 0.2);
+  const std::vector<Point3> terrain = noisyTerrainSample (20000, 2, 0.2);
   // A thick part may leave a triangle or two apart from the sheet.
   const WrapResult r = expectOpenSheet (terrain, 1, 0.999, WrapParameters (), 2);
   EXPECT_GT (facing (terrain, r)[2], 0.0);
@@ -130,7 +118,7 @@ TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
   // Noise across the layer of about the median spacing (half the mean): X is a sheet torn by
   // thin solids, and only a sample at a coarser spacing sees one layer. The sheet may pass
   // through those solids, and a few points stay below it.
-  const std::vector<Point3> terrain = noisyTerrain (20000, 3, 0.5);
+  const std::vector<Point3> terrain = noisyTerrainSample (20000, 3, 0.5);
   const WrapResult r = expectOpenSheet (terrain, 1, 0.995, WrapParameters (), 2);
   EXPECT_GT (facing (terrain, r)[2], 0.0);
   // Closed, it is the two-sided shell around X.
@@ -141,7 +129,7 @@ TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
 TEST (OpenSheet, SmallTerrainWithNoiseOfASpacingIsOneSheet)
 {
   // 2,000 points: the sample is one point in 7, still 256 of them.
-  const std::vector<Point3> terrain = noisyTerrain (2000, 4, 0.5);
+  const std::vector<Point3> terrain = noisyTerrainSample (2000, 4, 0.5);
   expectOpenSheet (terrain, 1, 0.99, WrapParameters (), 2);
 }
 

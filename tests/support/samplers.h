@@ -88,6 +88,19 @@ terrainSample (std::size_t n, unsigned seed)
   return p;
 }
 
+/** terrainSample() moved across, in z, by Gaussian noise of \a sigma mean spacings (2 / sqrt n;
+  * the median spacing is about half of it). */
+inline std::vector<Point3>
+noisyTerrainSample (std::size_t n, unsigned seed, double sigma)
+{
+  std::vector<Point3> p = terrainSample (n, seed);
+  std::mt19937_64 random (seed + 5);
+  std::normal_distribution<double> noise (0.0, sigma * 2.0 / std::sqrt (double (n)));
+  for (auto& q : p)
+    q[2] += noise (random);
+  return p;
+}
+
 /** A surface of genus 2: two tori (radii 1 and 0.4, around z-axes through (-1.1, 0, 0) and
   * (1.1, 0, 0)) fused where they overlap, each torus's points inside the other's solid dropped.
   * The two tunnels' axes are x = -1.1 and x = 1.1. */
