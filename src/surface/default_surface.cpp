@@ -120,7 +120,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     clock.stageDone ("sheet");
     return out;
   }
-  if (noisy && closed)
+  if (single_layer && noisy && closed)
   {
     // The labelled solid of a noisy layer is the solid in pieces, with handles, that the sample
     // told apart: the two-sided shell alone is asked.
