@@ -116,7 +116,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
       addInnerTriangles (complex, x, candidates);
     out.w = openSheet (
         adjacency_, std::move (candidates), positions, [&] { return known ? known->inside : labelsFor (x).inside; },
-        viewpoint);
+        viewpoint, noisy);
     clock.stageDone ("sheet");
     return out;
   }

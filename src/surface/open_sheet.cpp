@@ -6,6 +6,8 @@
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -55,6 +57,36 @@ areaNormal (const Triangle& t, const std::vector<Point3>& p)
   const Point3 &a = p[t[0]], &b = p[t[1]], &c = p[t[2]];
   const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+}
+
+/** An edge ab of a vertex v's link, as (a, b) with a < b, and the triangle abv of Del S. */
+using LinkEdge = std::pair<std::pair<std::uint32_t, std::uint32_t>, SimplexId>;
+
+/** The edges of \a v's link in Del S, sorted, each once. */
+void
+gatherLinkEdges (const Tetrahedra& tetrahedra, std::uint32_t v, Star& star, std::vector<LinkEdge>& link)
+{
+  const SimplicialComplex& complex = tetrahedra.complex ();
+  tetrahedra.gatherStar (v, star);
+  link.clear ();
+  for (std::uint32_t t : star.tetrahedra ())
+  {
+    int apex = 0;
+    while (tetrahedra.vertex (t, apex) != v)
+      ++apex;
+    for (int k = 1; k < 4; ++k)
+    {
+      // Facet i of t holds v and the two vertices other than the apex and vertex i.
+      const int i = (apex + k) & 3;
+      std::uint32_t ab[2], n = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != apex && j != i)
+          ab[n++] = tetrahedra.vertex (t, j);
+      link.push_back ({{std::min (ab[0], ab[1]), std::max (ab[0], ab[1])}, complex.facet (3, t, i).id});
+    }
+  }
+  std::sort (link.begin (), link.end ());
+  link.erase (std::unique (link.begin (), link.end ()), link.end ());
 }
 
 /** The growth of the sheets: the candidate triangles and the region grown from them. */
@@ -240,6 +272,15 @@ public:
     * such, with no edge across a gap. The tent keeps each edge on at most two triangles and each
     * fan one. */
   std::size_t detourThroughMissedPoints (const Tetrahedra& tetrahedra);
+
+  /** Brings each point that the sheets still miss onto them by a cone (returns how many): where a
+    * strip of one to three sheet triangles joined across edges, all of whose points are on its rim, has
+    * each rim edge on a Delaunay triangle with the point, the strip becomes the cone from the
+    * point over its rim, the smallest such, with no edge across a gap. A tent is the cone over one
+    * triangle; a wider strip reaches a point under a sheet that the Delaunay triangles around it
+    * do not share (the sheet took the other diagonal of a quadrilateral above it); a strip of none
+    * is an edge on the sheets' boundary, and its cone one triangle more on it. */
+  std::size_t coneOverMissedPoints (const Tetrahedra& tetrahedra);
 
   /** Closes the holes of the sheets smaller than a gap the sampling resolves (where the growth
     * passed triangles by, or a long triangle was left out) by ear clipping, the shortest new edge
@@ -434,6 +475,94 @@ private:
     }
   }
 
+public:
+  /** Per point, the direction across the layer: the eigenvector of the least eigenvalue of the
+    * sum, over the point and its Delaunay neighbours, of each one's covariance with its own
+    * neighbours (no edge across a gap): a structure tensor over about two rings, which noise
+    * across the layer of a spacing does not turn over. */
+  void measureLayerNormals ()
+  {
+    const std::uint32_t nv = complex_.numVertices ();
+    std::vector<std::uint32_t> start (nv + 1, 0), around;
+    const std::size_t ne = complex_.size (1);
+    for (SimplexId e = 0; e < ne; ++e)
+    {
+      const std::uint32_t* v = complex_.vertices (1, e);
+      if (!edgeSpansGap (v[0], v[1]))
+      {
+        ++start[v[0] + 1];
+        ++start[v[1] + 1];
+      }
+    }
+    for (std::uint32_t v = 0; v < nv; ++v)
+      start[v + 1] += start[v];
+    around.resize (start.back ());
+    std::vector<std::uint32_t> at (start.begin (), start.end () - 1);
+    for (SimplexId e = 0; e < ne; ++e)
+    {
+      const std::uint32_t* v = complex_.vertices (1, e);
+      if (!edgeSpansGap (v[0], v[1]))
+      {
+        around[at[v[0]]++] = v[1];
+        around[at[v[1]]++] = v[0];
+      }
+    }
+    // Each point's covariance with its neighbours, from their offsets to it (far from the origin,
+    // the positions' own squares would cancel): the upper triangle, xx xy xz yy yz zz.
+    std::vector<std::array<double, 6>> covariance (nv);
+    parallelForEach (nv, [&] (std::size_t v) {
+      const Point3& o = positions_[v];
+      double mean[3] = {0, 0, 0}, second[6] = {0, 0, 0, 0, 0, 0};
+      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+      {
+        const Point3& p = positions_[around[k]];
+        const double d[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+        for (int i = 0, at = 0; i < 3; ++i)
+        {
+          mean[i] += d[i];
+          for (int j = i; j < 3; ++j)
+            second[at++] += d[i] * d[j];
+        }
+      }
+      const double n = double (start[v + 1] - start[v] + 1); // the point itself at offset 0
+      for (int i = 0, at = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j, ++at)
+          covariance[v][at] = second[at] / n - mean[i] * mean[j] / (n * n);
+    });
+    layer_normal_.assign (nv, {0.0f, 0.0f, 0.0f});
+    parallelForEach (nv, [&] (std::size_t v) {
+      if (start[v + 1] - start[v] < 2)
+        return;
+      std::array<double, 6> sum = covariance[v];
+      for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+        for (int i = 0; i < 6; ++i)
+          sum[i] += covariance[around[k]][i];
+      Eigen::Matrix3d tensor;
+      tensor << sum[0], sum[1], sum[2], sum[1], sum[3], sum[4], sum[2], sum[4], sum[5];
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+      solver.computeDirect (tensor);
+      const Eigen::Vector3d n = solver.eigenvectors ().col (0);
+      layer_normal_[v] = {float (n[0]), float (n[1]), float (n[2])};
+    });
+    facing_.assign (nv, 0);
+  }
+
+private:
+  /** Does triangle \a t, as oriented, face the way the sheet faces at each of its points, point
+    * \a apex the way \a apex_facing says if that is not 0? */
+  bool facesAlong (const Triangle& t, std::uint32_t apex, std::int8_t apex_facing) const
+  {
+    const std::array<double, 3> n = areaNormal (t, positions_);
+    for (std::uint32_t v : t)
+    {
+      const std::int8_t f = v == apex && apex_facing != 0 ? apex_facing : facing_[v];
+      const auto& l = layer_normal_[v];
+      if (f * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) <= 0)
+        return false;
+    }
+    return true;
+  }
+
   /** Queues the candidates on front edge \a e that are not placed. */
   void queueAround (SimplexId e)
   {
@@ -470,6 +599,16 @@ private:
 
   void place (std::uint32_t c, const Triangle& t)
   {
+    if (!facing_.empty ())
+    {
+      const std::array<double, 3> n = areaNormal (t, positions_);
+      for (std::uint32_t v : t)
+        if (facing_[v] == 0)
+        {
+          const auto& l = layer_normal_[v];
+          facing_[v] = n[0] * l[0] + n[1] * l[1] + n[2] * l[2] < 0 ? -1 : 1;
+        }
+    }
     placed_[c] = static_cast<std::uint32_t> (triangles_.size ());
     triangles_.push_back (t);
     ids_.push_back (candidates_[c]);
@@ -517,6 +656,20 @@ private:
       return;
     if ((edge_count_[ac] == 1 && !traverses (ac, apex, a)) || (edge_count_[cb] == 1 && !traverses (cb, b, apex)))
       return;
+    std::int8_t apex_facing = 0; // the way a new point faces: as the front's points do
+    if (!facing_.empty ())
+    {
+      if (facing_[apex] == 0)
+      {
+        const auto &l = layer_normal_[apex], &la = layer_normal_[a], &lb = layer_normal_[b];
+        double along = 0;
+        for (int k = 0; k < 3; ++k)
+          along += l[k] * (facing_[a] * la[k] + facing_[b] * lb[k]);
+        apex_facing = along < 0 ? -1 : 1;
+      }
+      if (!facesAlong (t, apex, apex_facing))
+        return; // it would turn the sheet over
+    }
     if (on_[apex])
     {
       if (c >= extra_from_ && c < crack_from_)
@@ -528,6 +681,8 @@ private:
         touched_.push_back (apex);
       }
     }
+    if (apex_facing != 0)
+      facing_[apex] = apex_facing;
     place (c, t);
   }
 
@@ -547,9 +702,11 @@ private:
   std::vector<std::uint32_t> edge_start_, edge_candidates_;
   std::vector<std::uint8_t> edge_count_, edge_forward_; // per edge: grown triangles on it; the one's direction
   std::vector<std::uint8_t> on_;                        // per vertex: on a grown triangle
-  std::vector<std::uint32_t> open_edges_;               // per vertex: its grown edges on one triangle
-  std::vector<std::uint32_t> placed_;                   // per candidate: its place in triangles_, or NONE
-  std::vector<Triangle> triangles_;                     // grown, oriented
+  std::vector<std::array<float, 3>> layer_normal_;      // per vertex, if the layer is noisy: see measureLayerNormals()
+  std::vector<std::int8_t> facing_;       // per vertex: the sheet there faces +-layer_normal_ (0: not yet)
+  std::vector<std::uint32_t> open_edges_; // per vertex: its grown edges on one triangle
+  std::vector<std::uint32_t> placed_;     // per candidate: its place in triangles_, or NONE
+  std::vector<Triangle> triangles_;       // grown, oriented
   std::vector<SimplexId> ids_;
   std::vector<std::uint32_t> touched_; // points a triangle touched where its front met itself
   std::vector<Triangle> crumbs_;       // lifted by liftCrumbs(), with their ids
@@ -725,6 +882,11 @@ SheetGrowth::dropExtraFans ()
     }
   triangles_.resize (kept);
   ids_.resize (kept);
+  // A point whose every triangle was in a dropped fan is on no sheet now.
+  std::fill (on_.begin (), on_.end (), 0);
+  for (const Triangle& t : triangles_)
+    for (std::uint32_t v : t)
+      on_[v] = 1;
 }
 
 std::size_t
@@ -792,6 +954,159 @@ SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
       }
       sheet_index[id] = at;
     }
+    on_[v] = 1;
+    ++brought;
+  }
+  return brought;
+}
+
+std::size_t
+SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
+{
+  // Named, not bound: a lambda below captures them (C++17).
+  const auto by_vertex = trianglesAroundVertices ();
+  const std::vector<std::uint32_t>&start = by_vertex.first, &around = by_vertex.second;
+  // Triangles replaced or given a neighbour in this round: the index no longer tells their edges.
+  std::vector<std::uint8_t> touched (triangles_.size (), 0);
+  std::size_t brought = 0;
+  Star star;
+  std::vector<LinkEdge> link;
+  const auto linkTriangle = [&] (std::uint32_t a, std::uint32_t b) {
+    const std::pair key (std::min (a, b), std::max (a, b));
+    const auto it = std::lower_bound (link.begin (), link.end (), std::pair (key, SimplexId (0)));
+    return it != link.end () && it->first == key ? it->second : NO_ID;
+  };
+  std::vector<std::uint32_t> near, strip, best, corners, on_edge;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> rim, best_rim, edges;
+  double best_size = 0;
+  // Takes the cone over \a rim (the strip's boundary, each edge as its triangle runs along it) if
+  // it is the smallest so far.
+  const auto consider = [&] (std::uint32_t v) {
+    double size = 0;
+    for (const auto& [a, b] : rim)
+    {
+      if (linkTriangle (a, b) == NO_ID || edgeSpansGap (a, v) || edgeSpansGap (b, v))
+        return;
+      size = std::max ({size, distance (a, v), distance (b, v)});
+    }
+    if (best_rim.empty () || size < best_size)
+    {
+      best = strip;
+      best_rim = rim;
+      best_size = size;
+    }
+  };
+  for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
+  {
+    if (on_[v] || tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+      continue;
+    gatherLinkEdges (tetrahedra, v, star, link);
+    // The sheet triangles with an edge on the link (each triangle of a strip has one), and the
+    // link edges on one sheet triangle only (a sheet's boundary), each a strip of none.
+    best.clear ();
+    best_rim.clear ();
+    near.clear ();
+    for (const auto& [ab, id] : link)
+    {
+      on_edge.clear ();
+      bool known = true;
+      for (std::uint32_t k = start[ab.first]; k < start[ab.first + 1]; ++k)
+      {
+        const std::uint32_t i = around[k];
+        const Triangle& t = triangles_[i];
+        if (t[0] == ab.second || t[1] == ab.second || t[2] == ab.second)
+        {
+          on_edge.push_back (i);
+          known = known && !touched[i] && ids_[i] != NO_ID;
+        }
+      }
+      if (!known)
+        continue;
+      near.insert (near.end (), on_edge.begin (), on_edge.end ());
+      if (on_edge.size () == 1)
+      {
+        const Triangle& t = triangles_[on_edge[0]];
+        const bool forward = (t[0] == ab.first && t[1] == ab.second) || (t[1] == ab.first && t[2] == ab.second) ||
+                             (t[2] == ab.first && t[0] == ab.second);
+        strip.clear ();
+        rim.assign (1, forward ? std::pair (ab.second, ab.first) : ab);
+        consider (v);
+      }
+    }
+    std::sort (near.begin (), near.end ());
+    near.erase (std::unique (near.begin (), near.end ()), near.end ());
+    // Strips of one, two and three triangles joined across edges.
+    const auto tryStrip = [&] () {
+      edges.clear ();
+      corners.clear ();
+      for (std::uint32_t i : strip)
+        for (int k = 0; k < 3; ++k)
+        {
+          const Triangle& t = triangles_[i];
+          edges.push_back ({t[k], t[(k + 1) % 3]});
+          corners.push_back (t[k]);
+        }
+      std::sort (corners.begin (), corners.end ());
+      corners.erase (std::unique (corners.begin (), corners.end ()), corners.end ());
+      if (corners.size () != strip.size () + 2)
+        return; // a point inside the strip
+      rim.clear ();
+      for (const auto& [a, b] : edges)
+        if (std::find (edges.begin (), edges.end (), std::pair (b, a)) == edges.end ())
+          rim.push_back ({a, b});
+      if (rim.size () == corners.size ())
+        consider (v);
+    };
+    const auto adjacent = [&] (std::uint32_t i, std::uint32_t j) {
+      int shared = 0;
+      for (std::uint32_t a : triangles_[i])
+        for (std::uint32_t b : triangles_[j])
+          shared += a == b;
+      return shared == 2;
+    };
+    for (std::size_t x = 0; x < near.size (); ++x)
+    {
+      strip.assign (1, near[x]);
+      tryStrip ();
+      for (std::size_t y = 0; y < near.size (); ++y)
+      {
+        if (y == x || !adjacent (near[x], near[y]))
+          continue;
+        if (y > x)
+        {
+          strip = {near[x], near[y]};
+          tryStrip ();
+        }
+        for (std::size_t z = x + 1; z < near.size (); ++z)
+          if (z != y && adjacent (near[y], near[z]))
+          {
+            strip = {near[x], near[y], near[z]}; // a path x - y - z, each once (x < z)
+            tryStrip ();
+          }
+      }
+    }
+    if (best_rim.empty ())
+      continue;
+    for (std::size_t k = 0; k < best_rim.size (); ++k)
+    {
+      const auto [a, b] = best_rim[k];
+      const Triangle cone{a, b, v};
+      const SimplexId id = linkTriangle (a, b);
+      if (k < best.size ())
+      {
+        triangles_[best[k]] = cone;
+        ids_[best[k]] = id;
+        touched[best[k]] = 1;
+      }
+      else
+      {
+        triangles_.push_back (cone);
+        ids_.push_back (id);
+      }
+    }
+    if (best.empty ())
+      for (std::uint32_t k = start[best_rim[0].first]; k < start[best_rim[0].first + 1]; ++k)
+        touched[around[k]] = 1; // the flap's neighbour among them
     on_[v] = 1;
     ++brought;
   }
@@ -963,19 +1278,24 @@ SheetGrowth::orientedSheets (const Facing& facing, const TieBreak& tieBreak)
 
 Boundary
 openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& positions,
-           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint)
+           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint,
+           bool noisy)
 {
   const SimplicialComplex& complex = tetrahedra.complex ();
   SheetGrowth growth (tetrahedra, w, positions);
   w = {}; // the candidates have what the growth needs of it
+  if (noisy)
+    growth.measureLayerNormals ();
   growth.grow ();
   growth.closeCracks (tetrahedra);
   growth.forgetCandidates ();
   growth.dropExtraFans ();
   growth.liftCrumbs ();
   // Points buried in X (a wall between a roof and the ground X fills) and the crumbs' come on a
-  // tent at a time.
+  // tent at a time; the few that no tent reaches, by cones.
   for (int round = 0; round < MAX_TENT_ROUNDS && growth.detourThroughMissedPoints (tetrahedra) > 0; ++round)
+  {}
+  for (int round = 0; round < MAX_TENT_ROUNDS && growth.coneOverMissedPoints (tetrahedra) > 0; ++round)
   {}
   growth.restoreCrumbs ();
   growth.fillSmallHoles ();

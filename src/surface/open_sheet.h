@@ -40,8 +40,19 @@ namespace pcl_wrap::detail
   * close the cracks where X cut a ring-shaped layer and reach the points X buried (where it fills
   * the corner between a wall and the ground). A point the sheets miss gets a tent: a sheet
   * triangle that is a facet of a Delaunay tetrahedron with the point as its apex is replaced by
-  * the other three facets; a crumb the growth left beside a much larger sheet is taken off first,
-  * so that its points come onto that sheet. Holes smaller than a gap are closed by ear clipping.
+  * the other three facets; where none is, a cone: a strip of up to three sheet triangles, or an
+  * edge of a sheet's boundary, is replaced by the Delaunay triangles from the point over its rim.
+  * A crumb the growth left beside a much larger sheet is taken off first, so that its points come
+  * onto that sheet. Holes smaller than a gap are closed by ear clipping.
+  *
+  * With \a noisy (a layer with noise across it of about a spacing, which only a coarser sample
+  * found), the growth does not turn the sheet over: each point has a direction across the layer,
+  * from a structure tensor over about two rings of its Delaunay neighbours, and the sheet takes,
+  * at the first triangle on a point, the side of that direction it faces; a triangle that would
+  * face the other way at one of its points is refused. Without it, steep triangles between points
+  * at different depths turn the sheet over a little at a time, and the regions turned over cannot
+  * join those that are not: the sheet comes out torn by long cracks, about half of it facing
+  * down.
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
@@ -50,6 +61,7 @@ namespace pcl_wrap::detail
   * \param[in] w the boundary of X, with its triangles' ids */
 Boundary
 openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& positions,
-           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint);
+           const std::function<std::vector<std::uint8_t> ()>& inside, const std::optional<Point3>& viewpoint,
+           bool noisy);
 
 } // namespace pcl_wrap::detail
