@@ -3,7 +3,8 @@
 //
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
 // vertex against the surface's links found by brute force, the join of parts cut off the
-// solid through X, the points left floating in a cut, brought back, webs across a gap cut
+// solid through X, the points left floating in a cut, brought back, W's last points brought on a
+// tetrahedron at a time, webs across a gap cut
 // where bars the points sample stay, and the spacing of the sample around a lone point.
 #include "wrap/boundary.h"
 #include "wrap/manifold_split.h"
@@ -11,6 +12,7 @@
 #include "surface/solid_join.h"
 #include "surface/solid_labelling.h"
 #include "surface/solid_pinch_split.h"
+#include "surface/solid_points_of_w.h"
 #include "surface/solid_repair.h"
 #include "support/pipeline.h"
 #include "support/samplers.h"
@@ -21,10 +23,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <vector>
 
 namespace pcl_wrap::test
@@ -101,6 +105,30 @@ repairedSurface (const detail::Tetrahedra& tetrahedra, const std::vector<std::ui
   return {triangles.begin (), triangles.end ()};
 }
 
+/** The ball of radius sqrt 0.4 about the origin (or, given \a x, X's tetrahedra) with one
+  * tetrahedron in \a one_in flipped at random, and random margins. */
+detail::SolidLabels
+flippedLabels (const Pipeline& p, const detail::Subcomplex* x, unsigned one_in, unsigned seed)
+{
+  std::mt19937 random (seed);
+  detail::SolidLabels labels;
+  for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
+  {
+    double r2 = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      double centre = 0;
+      for (int i = 0; i < 4; ++i)
+        centre += p.points[p.complex.vertex (3, t, i)][c] / 4;
+      r2 += centre * centre;
+    }
+    const bool in = x ? x->contains ({3, t}) : r2 < 0.4;
+    labels.inside.push_back (in != (random () % one_in == 0));
+    labels.margin.push_back (std::uniform_real_distribution<float> (0.0f, 2.0f) (random));
+  }
+  return labels;
+}
+
 TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
 {
   std::size_t before = 0, after = 0, moved = 0;
@@ -112,22 +140,7 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
     detail::Subcomplex x (p.complex);
     detail::Retraction (x, p.classification).retract ();
     // A ball (or X's tetrahedra) with a random fifth of the tetrahedra flipped, random margins.
-    std::mt19937 random (seed);
-    detail::SolidLabels labels;
-    for (detail::SimplexId t = 0; t < p.complex.size (3); ++t)
-    {
-      double r2 = 0;
-      for (int c = 0; c < 3; ++c)
-      {
-        double centre = 0;
-        for (int i = 0; i < 4; ++i)
-          centre += p.points[p.complex.vertex (3, t, i)][c] / 4;
-        r2 += centre * centre;
-      }
-      const bool in = seed % 3 ? r2 < 0.4 : x.contains ({3, t});
-      labels.inside.push_back (in != (random () % 5 == 0));
-      labels.margin.push_back (std::uniform_real_distribution<float> (0.0f, 2.0f) (random));
-    }
+    detail::SolidLabels labels = flippedLabels (p, seed % 3 ? nullptr : &x, 5, seed);
     const std::vector<std::uint8_t> given = labels.inside;
     for (const auto& link : surfaceLinks (p.complex, given))
       before += !link.empty () && !isOneCycle (link);
@@ -163,6 +176,88 @@ TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
   EXPECT_GT (before, 1000u);
   EXPECT_LT (10 * after, before) << after << " of " << before;
   EXPECT_GT (moved, 1000u);
+}
+
+/** Per vertex, whether it is on the paper's W: a tetrahedron around it not in X, or a facet of
+  * the hull at it (brute force, by counting each facet's tetrahedra). */
+std::vector<std::uint8_t>
+pointsOfW (const detail::SimplicialComplex& complex, const detail::Subcomplex& x)
+{
+  std::map<detail::SimplexId, int> tetrahedra_of_facet;
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    for (int i = 0; i < 4; ++i)
+      ++tetrahedra_of_facet[complex.facet (3, t, i).id];
+  std::vector<std::uint8_t> on (complex.numVertices (), 0);
+  for (detail::SimplexId t = 0; t < complex.size (3); ++t)
+    if (!x.contains ({3, t}))
+      for (int i = 0; i < 4; ++i)
+        on[complex.vertex (3, t, i)] = 1;
+  for (const auto& [facet, count] : tetrahedra_of_facet)
+    if (count == 1)
+      for (int i = 0; i < 3; ++i)
+        on[complex.vertices (2, facet)[i]] = 1;
+  return on;
+}
+
+/** The Euler characteristic of the surface whose vertices have the links \a links. */
+long
+surfaceEuler (const std::vector<LinkEdges>& links)
+{
+  std::set<std::array<std::uint32_t, 3>> triangles;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  long vertices = 0;
+  for (std::uint32_t v = 0; v < links.size (); ++v)
+  {
+    vertices += !links[v].empty ();
+    for (const auto& [a, b] : links[v])
+    {
+      std::array<std::uint32_t, 3> t{v, a, b};
+      std::sort (t.begin (), t.end ());
+      triangles.insert (t);
+      edges.insert ({std::min (v, a), std::max (v, a)});
+    }
+  }
+  return vertices - long (edges.size ()) + long (triangles.size ());
+}
+
+TEST (SolidRepair, PointsOfWComeOnATetrahedronAtATimeAndKeepTheSurfacesTopology)
+{
+  std::size_t brought = 0;
+  for (unsigned seed = 1; seed <= 20; ++seed)
+  {
+    SCOPED_TRACE (seed);
+    const Pipeline p (seed % 2 ? cubeSample (400, seed) : sphereSample (400, seed, 0.05));
+    ASSERT_EQ (p.dimension (), 3);
+    detail::Subcomplex x (p.complex);
+    detail::Retraction (x, p.classification).retract ();
+    // A ball with a random tenth of its tetrahedra flipped, repaired: a surface that leaves some of
+    // W's points off it, on either side.
+    detail::SolidLabels labels = flippedLabels (p, nullptr, 10, seed);
+    detail::repairSolid (p.tetrahedra, x, p.points, labels);
+    const std::vector<LinkEdges> before = surfaceLinks (p.complex, labels.inside);
+    const std::vector<std::uint8_t> on_w = pointsOfW (p.complex, x);
+    const std::size_t parts = solidParts (p.complex, labels.inside);
+
+    const std::vector<std::uint32_t> moved = detail::bringPointsOfWOn (p.tetrahedra, x, p.points, labels);
+
+    const std::vector<LinkEdges> after = surfaceLinks (p.complex, labels.inside);
+    std::size_t came_on = 0;
+    for (std::uint32_t v = 0; v < before.size (); ++v)
+      if (!before[v].empty ())
+        EXPECT_EQ (isOneCycle (before[v]), isOneCycle (after[v])) << "vertex " << v << " changed its fans";
+      else if (!after[v].empty ())
+      {
+        EXPECT_TRUE (on_w[v]) << "vertex " << v << " is not on W";
+        EXPECT_TRUE (isOneCycle (after[v])) << "vertex " << v << " came on in more than one fan";
+        ++came_on;
+      }
+    EXPECT_EQ (came_on, moved.size ()) << "one point per moved tetrahedron";
+    EXPECT_EQ (surfaceEuler (before), surfaceEuler (after));
+    EXPECT_EQ (solidParts (p.complex, labels.inside), parts);
+    brought += came_on;
+  }
+  EXPECT_GT (brought, 10u) << "the labellings left points to bring";
+  std::printf ("points of W brought on: %zu\n", brought);
 }
 
 /** A dense sphere's points and their X, which fills the ball. */

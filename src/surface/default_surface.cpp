@@ -5,6 +5,7 @@
 #include "surface/open_sheet.h"
 #include "surface/single_layer.h"
 #include "surface/solid_pinch_split.h"
+#include "surface/solid_points_of_w.h"
 #include "surface/solid_repair.h"
 #include "util/parallel_for_each.h"
 
@@ -145,6 +146,14 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     });
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
+  // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's
+  // solid that leaves points off is the sign that X's layer is the surface: below.)
+  if (const std::size_t moved = single_layer ? 0 : bringPointsOfWOn (adjacency_, x, positions, labels).size ();
+      moved > 0)
+  {
+    stats.tetrahedra_moved += moved;
+    repair.surface.reset ();
+  }
   clock.stageDone ("repair");
 
   // The boundary of the labelled solid, repaired to a manifold; where the repair leaves it

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Copyright (C) 2026 the pcl_wrap authors
+#pragma once
+
+#include "delaunay/tetrahedra.h"
+#include "surface/solid_labelling.h"
+#include "wrap/subcomplex.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl_wrap::detail
+{
+
+/** \brief Brings onto the solid's surface the points that the paper's W has and the surface has
+  * not, where one tetrahedron does it, so that the surface loses none of W's points that it
+  * could keep by so small a move.
+  *
+  * A point is on W unless X holds its whole star (and it is not on the hull); it is on the solid's
+  * surface when its star has tetrahedra on both sides (a hull vertex: one inside). A point on W
+  * but not on the surface has its whole star on one side. A tetrahedron of that star whose facet
+  * opposite the point is on the surface changes side: the surface then runs over the point by
+  * the tetrahedron's three other facets, and stays a closed 2-manifold wherever it was one (the
+  * three are new to it, and so is the point), with its pieces and genus. Of several such
+  * tetrahedra, the one whose longest edge is shortest moves; a point none reaches stays off.
+  * \param[in] positions per vertex
+  * \return the tetrahedra moved */
+std::vector<std::uint32_t>
+bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
+                  SolidLabels& labels);
+
+} // namespace pcl_wrap::detail
