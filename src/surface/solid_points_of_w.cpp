@@ -3,80 +3,77 @@
 #include "surface/solid_points_of_w.h"
 
 #include "surface/solid_join.h"
-#include "util/parallel_for_each.h"
-#include "util/portable.h"
 
 namespace pcl_wrap::detail
 {
-
 namespace
 {
 
 /** Rounds of moves: a point that a move brings on can open the way for a point next to it. */
 constexpr int MAX_ROUNDS = 8;
 
-/** One round: moves at most one tetrahedron per point (appended to \a moved); returns how many. */
-std::size_t
-bringOnOnce (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
-             SolidLabels& labels, std::vector<std::uint32_t>& moved)
+/** The points of W off the solid's surface: on W, a tetrahedron around them not in X or a hull
+  * facet at them; off the surface, their tetrahedra all on one side (a hull facet of an inside
+  * tetrahedron counts as outside). */
+std::vector<std::uint32_t>
+pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
 {
-  // Per vertex: is it on W (a tetrahedron around it not in X, or a hull facet at it), and has it
-  // a tetrahedron inside the solid, and one outside (or a hull facet of an inside one at it)?
-  const std::uint32_t nv = tetrahedra.complex ().numVertices ();
-  std::vector<std::uint8_t> on_w (nv, 0), has_inside (nv, 0), has_outside (nv, 0);
-  parallelForEach (tetrahedra.size (), [&] (std::size_t t) { // stores of 1 from several threads
-    const auto u = static_cast<std::uint32_t> (t);
-    const bool inside = labels.inside[t] != 0, in_x = x.contains ({3, static_cast<SimplexId> (t)});
+  enum : std::uint8_t
+  {
+    ON_W = 1,
+    HAS_INSIDE = 2,
+    HAS_OUTSIDE = 4
+  };
+  // One pass in order: the tetrahedra's vertices are numbered along a space-filling curve, so the
+  // flags they touch stay in cache, where threads would share their lines.
+  std::vector<std::uint8_t> flags (tetrahedra.complex ().numVertices (), 0);
+  for (std::uint32_t t = 0; t < tetrahedra.size (); ++t)
+  {
+    const bool in = inside[t] != 0;
+    const std::uint8_t side = in ? HAS_INSIDE : HAS_OUTSIDE;
+    const std::uint8_t bits = x.contains ({3, static_cast<SimplexId> (t)}) ? side : side | ON_W;
     for (int i = 0; i < 4; ++i)
     {
-      const std::uint32_t v = tetrahedra.vertex (u, i);
-      relaxedStore (inside ? &has_inside[v] : &has_outside[v], std::uint8_t (1));
-      if (!in_x)
-        relaxedStore (&on_w[v], std::uint8_t (1));
-      if (tetrahedra.neighbour (u, i) == OUTSIDE_HULL)
+      flags[tetrahedra.vertex (t, i)] |= bits;
+      if (tetrahedra.neighbour (t, i) == OUTSIDE_HULL)
         for (int j = 1; j < 4; ++j)
-        {
-          const std::uint32_t w = tetrahedra.vertex (u, (i + j) & 3);
-          relaxedStore (&on_w[w], std::uint8_t (1));
-          if (inside)
-            relaxedStore (&has_outside[w], std::uint8_t (1));
-        }
+          flags[tetrahedra.vertex (t, (i + j) & 3)] |= in ? ON_W | HAS_OUTSIDE : ON_W;
     }
-  });
-  const std::size_t before = moved.size ();
-  Star star;
-  for (std::uint32_t v = 0; v < nv; ++v)
-  {
-    if (!on_w[v] || (has_inside[v] && has_outside[v]))
-      continue;
-    if (tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
-      continue;
-    tetrahedra.gatherStar (v, star);
-    std::uint32_t best = OUTSIDE_HULL;
-    double shortest = 0;
-    for (std::uint32_t t : star.tetrahedra ())
-    {
-      int apex = 0;
-      while (tetrahedra.vertex (t, apex) != v)
-        ++apex;
-      const std::uint32_t u = tetrahedra.neighbour (t, apex);
-      // The facet opposite v is on the surface: across it, the other side (or the hull, outside).
-      const bool across_inside = u != OUTSIDE_HULL && labels.inside[u];
-      if (across_inside == (labels.inside[t] != 0))
-        continue;
-      const double longest = longestEdge (tetrahedra, positions, t);
-      if (best == OUTSIDE_HULL || longest < shortest)
-      {
-        best = t;
-        shortest = longest;
-      }
-    }
-    if (best == OUTSIDE_HULL)
-      continue;
-    labels.inside[best] = !labels.inside[best];
-    moved.push_back (best);
   }
-  return moved.size () - before;
+  std::vector<std::uint32_t> off;
+  for (std::uint32_t v = 0; v < flags.size (); ++v)
+    if ((flags[v] & ON_W) && (flags[v] & (HAS_INSIDE | HAS_OUTSIDE)) != (HAS_INSIDE | HAS_OUTSIDE))
+      off.push_back (v);
+  return off;
+}
+
+/** The tetrahedron of \a v's star (all on one side) whose facet opposite \a v is on the surface
+  * and whose longest edge is shortest, or OUTSIDE_HULL. */
+std::uint32_t
+bestMove (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const std::vector<std::uint8_t>& inside,
+          std::uint32_t v, Star& star)
+{
+  tetrahedra.gatherStar (v, star);
+  std::uint32_t best = OUTSIDE_HULL;
+  double shortest = 0;
+  for (std::uint32_t t : star.tetrahedra ())
+  {
+    int apex = 0;
+    while (tetrahedra.vertex (t, apex) != v)
+      ++apex;
+    const std::uint32_t u = tetrahedra.neighbour (t, apex);
+    // The facet opposite v is on the surface: across it, the other side (or the hull, outside).
+    const bool across_inside = u != OUTSIDE_HULL && inside[u];
+    if (across_inside == (inside[t] != 0))
+      continue;
+    const double longest = longestEdge (tetrahedra, positions, t);
+    if (best == OUTSIDE_HULL || longest < shortest)
+    {
+      best = t;
+      shortest = longest;
+    }
+  }
+  return best;
 }
 
 } // namespace
@@ -85,9 +82,31 @@ std::vector<std::uint32_t>
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                   SolidLabels& labels)
 {
-  std::vector<std::uint32_t> moved;
-  for (int round = 0; round < MAX_ROUNDS && bringOnOnce (tetrahedra, x, positions, labels, moved) > 0; ++round)
-  {}
+  // A move changes the side of one tetrahedron, whose other three points were on the surface
+  // already: the points still off stay off, and only their stars need a second look.
+  std::vector<std::uint32_t> off = pointsOfWOffTheSurface (tetrahedra, x, labels.inside), moved;
+  Star star;
+  for (int round = 0; round < MAX_ROUNDS && !off.empty (); ++round)
+  {
+    const std::size_t before = moved.size ();
+    std::size_t kept = 0;
+    for (std::uint32_t v : off)
+    {
+      if (tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+        continue;
+      const std::uint32_t t = bestMove (tetrahedra, positions, labels.inside, v, star);
+      if (t == OUTSIDE_HULL)
+        off[kept++] = v;
+      else
+      {
+        labels.inside[t] = !labels.inside[t];
+        moved.push_back (t);
+      }
+    }
+    off.resize (kept);
+    if (moved.size () == before)
+      break;
+  }
   return moved;
 }
 
