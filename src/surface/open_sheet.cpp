@@ -557,6 +557,8 @@ private:
     {
       const std::int8_t f = v == apex && apex_facing != 0 ? apex_facing : facing_[v];
       const auto& l = layer_normal_[v];
+      if (l[0] == 0 && l[1] == 0 && l[2] == 0)
+        continue; // too few neighbours to tell (a point on no edge of W has none): no way to keep
       if (f * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) <= 0)
         return false;
     }
