@@ -47,12 +47,13 @@ namespace pcl_wrap::detail
   *
   * With \a noisy (a layer with noise across it of about a spacing, which only a coarser sample
   * found), the growth does not turn the sheet over: each point has a direction across the layer,
-  * from a structure tensor over about two rings of its Delaunay neighbours, and the sheet takes,
-  * at the first triangle on a point, the side of that direction it faces; a triangle that would
-  * face the other way at one of its points is refused. Without it, steep triangles between points
-  * at different depths turn the sheet over a little at a time, and the regions turned over cannot
-  * join those that are not: the sheet comes out torn by long cracks, about half of it facing
-  * down.
+  * from a structure tensor over about two rings of its Delaunay neighbours; a seed's points take
+  * the side of it their triangle faces, a point the growth brings in the side its front edge's
+  * points face, and a triangle that would face the other way at one of its points is refused
+  * (a point too sparsely connected for a direction refuses none). Without it, steep triangles
+  * between points at different depths turn the sheet over a little at a time, and the regions
+  * turned over cannot join those that are not: the sheet comes out torn by long cracks, about
+  * half of it facing down.
   *
   * Each connected sheet faces \a viewpoint when one is given; otherwise up (+z: terrains, aerial
   * scans), and a sheet with no up or down (a vertical wall) away from the solid its points close
