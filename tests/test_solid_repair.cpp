@@ -129,16 +129,28 @@ flippedLabels (const Pipeline& p, const detail::Subcomplex* x, unsigned one_in, 
   return labels;
 }
 
+/** 400 random points in a cube (odd seeds) or near a sphere (even seeds), and their X. */
+struct RandomSample
+{
+  explicit RandomSample (unsigned seed) : p (seed % 2 ? cubeSample (400, seed) : sphereSample (400, seed, 0.05))
+  {
+    detail::Retraction (x, p.classification).retract ();
+  }
+
+  const Pipeline p;
+  detail::Subcomplex x{p.complex};
+};
+
 TEST (SolidRepair, EveryVertexItLeavesIsOnOneFanOrReportedOnRandomLabellings)
 {
   std::size_t before = 0, after = 0, moved = 0;
   for (unsigned seed = 1; seed <= 30; ++seed)
   {
     SCOPED_TRACE (seed);
-    const Pipeline p (seed % 2 ? cubeSample (400, seed) : sphereSample (400, seed, 0.05));
+    const RandomSample sample (seed);
+    const Pipeline& p = sample.p;
+    const detail::Subcomplex& x = sample.x;
     ASSERT_EQ (p.dimension (), 3);
-    detail::Subcomplex x (p.complex);
-    detail::Retraction (x, p.classification).retract ();
     // A ball (or X's tetrahedra) with a random fifth of the tetrahedra flipped, random margins.
     detail::SolidLabels labels = flippedLabels (p, seed % 3 ? nullptr : &x, 5, seed);
     const std::vector<std::uint8_t> given = labels.inside;
@@ -226,10 +238,10 @@ TEST (SolidRepair, PointsOfWComeOnATetrahedronAtATimeAndKeepTheSurfacesTopology)
   for (unsigned seed = 1; seed <= 20; ++seed)
   {
     SCOPED_TRACE (seed);
-    const Pipeline p (seed % 2 ? cubeSample (400, seed) : sphereSample (400, seed, 0.05));
+    const RandomSample sample (seed);
+    const Pipeline& p = sample.p;
+    const detail::Subcomplex& x = sample.x;
     ASSERT_EQ (p.dimension (), 3);
-    detail::Subcomplex x (p.complex);
-    detail::Retraction (x, p.classification).retract ();
     // A ball with a random tenth of its tetrahedra flipped, repaired: a surface that leaves some of
     // W's points off it, on either side.
     detail::SolidLabels labels = flippedLabels (p, nullptr, 10, seed);

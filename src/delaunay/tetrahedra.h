@@ -100,6 +100,12 @@ public:
   const std::uint32_t* vertices (std::uint32_t t) const { return complex_->vertices (3, t); }
   /** \brief The vertices of the tetrahedra \a ids, ascending, each once. */
   std::vector<std::uint32_t> verticesOf (const std::vector<std::uint32_t>& ids) const;
+  /** \brief Where \a v is among \a t's vertices, which must hold it. */
+  int localIndex (std::uint32_t t, std::uint32_t v) const
+  {
+    const std::uint32_t* a = vertices (t);
+    return a[0] == v ? 0 : a[1] == v ? 1 : a[2] == v ? 2 : 3;
+  }
   bool hasVertex (std::uint32_t t, std::uint32_t v) const
   {
     const std::uint32_t* a = vertices (t);

@@ -71,9 +71,7 @@ gatherLinkEdges (const Tetrahedra& tetrahedra, std::uint32_t v, Star& star, std:
   link.clear ();
   for (std::uint32_t t : star.tetrahedra ())
   {
-    int apex = 0;
-    while (tetrahedra.vertex (t, apex) != v)
-      ++apex;
+    const int apex = tetrahedra.localIndex (t, v);
     for (int k = 1; k < 4; ++k)
     {
       // Facet i of t holds v and the two vertices other than the apex and vertex i.
@@ -548,6 +546,14 @@ public:
   }
 
 private:
+  /** \a n (a triangle's normal) along point \a v's direction across the layer: its sign says
+    * which side of the layer the triangle faces there; 0 where \a v has no direction. */
+  double alongLayerNormal (const std::array<double, 3>& n, std::uint32_t v) const
+  {
+    const auto& l = layer_normal_[v];
+    return n[0] * l[0] + n[1] * l[1] + n[2] * l[2];
+  }
+
   /** Does triangle \a t, as oriented, face the way the sheet faces at each of its points, point
     * \a apex the way \a apex_facing says if that is not 0? */
   bool facesAlong (const Triangle& t, std::uint32_t apex, std::int8_t apex_facing) const
@@ -559,7 +565,7 @@ private:
       const auto& l = layer_normal_[v];
       if (l[0] == 0 && l[1] == 0 && l[2] == 0)
         continue; // too few neighbours to tell (a point on no edge of W has none): no way to keep
-      if (f * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) <= 0)
+      if (f * alongLayerNormal (n, v) <= 0)
         return false;
     }
     return true;
@@ -606,10 +612,7 @@ private:
       const std::array<double, 3> n = areaNormal (t, positions_);
       for (std::uint32_t v : t)
         if (facing_[v] == 0)
-        {
-          const auto& l = layer_normal_[v];
-          facing_[v] = n[0] * l[0] + n[1] * l[1] + n[2] * l[2] < 0 ? -1 : 1;
-        }
+          facing_[v] = alongLayerNormal (n, v) < 0 ? -1 : 1;
     }
     placed_[c] = static_cast<std::uint32_t> (triangles_.size ());
     triangles_.push_back (t);
@@ -908,9 +911,7 @@ SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
     double best_size = 0;
     for (std::uint32_t t : star.tetrahedra ())
     {
-      int apex = 0;
-      while (tetrahedra.vertex (t, apex) != v)
-        ++apex;
+      const int apex = tetrahedra.localIndex (t, v);
       const std::uint32_t i = sheet_index[complex_.facet (3, t, apex).id];
       if (i == NONE)
         continue;
@@ -933,10 +934,7 @@ SheetGrowth::detourThroughMissedPoints (const Tetrahedra& tetrahedra)
       continue;
     const Triangle abc = triangles_[best];
     const auto facetWithout = [&] (std::uint32_t u) {
-      int k = 0;
-      while (tetrahedra.vertex (best_tetrahedron, k) != u)
-        ++k;
-      return complex_.facet (3, best_tetrahedron, k).id;
+      return complex_.facet (3, best_tetrahedron, tetrahedra.localIndex (best_tetrahedron, u)).id;
     };
     sheet_index[ids_[best]] = NONE;
     for (int k = 0; k < 3; ++k)

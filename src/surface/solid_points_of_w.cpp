@@ -58,10 +58,7 @@ bestMove (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, co
   double shortest = 0;
   for (std::uint32_t t : star.tetrahedra ())
   {
-    int apex = 0;
-    while (tetrahedra.vertex (t, apex) != v)
-      ++apex;
-    const std::uint32_t u = tetrahedra.neighbour (t, apex);
+    const std::uint32_t u = tetrahedra.neighbour (t, tetrahedra.localIndex (t, v));
     // The facet opposite v is on the surface: across it, the other side (or the hull, outside).
     const bool across_inside = u != OUTSIDE_HULL && inside[u];
     if (across_inside == (inside[t] != 0))
