@@ -186,6 +186,8 @@ printSummary (std::ostream& out, const WrapStatistics& s)
     out << "; the points are a single layer: a two-sided shell, " << s.bridge_simplices << " simplices tie its pieces";
   else if (s.single_layer)
     out << "; the points are a single layer: one open sheet";
+  if (s.surface_is_w)
+    out << "; the output is W, split: the labelled solid's surface would leave more of its points off";
   out << "\n"
       << "time:          " << std::fixed << std::setprecision (3) << s.total_seconds << " s (";
   for (std::size_t i = 0; i < s.timings.size (); ++i)

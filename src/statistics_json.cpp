@@ -51,10 +51,10 @@ statisticsJson (const WrapResult& result)
       << ",\"single_layer\":" << (s.single_layer ? "true" : "false") << ",\"bridge_simplices\":" << s.bridge_simplices
       << ",\"copies\":";
   writeList (out, result.copies);
-  out << "},\"tetrahedra_moved\":" << s.tetrahedra_moved << ",\"collapses\":" << s.collapses
-      << ",\"perturbations\":" << s.perturbations << ",\"w\":{\"triangles\":" << s.w_triangles
-      << ",\"dangling_edges\":" << s.w_dangling_edges << ",\"isolated_vertices\":" << s.w_isolated_vertices
-      << "},\"timings\":{";
+  out << "},\"tetrahedra_moved\":" << s.tetrahedra_moved << ",\"surface_is_w\":" << (s.surface_is_w ? "true" : "false")
+      << ",\"collapses\":" << s.collapses << ",\"perturbations\":" << s.perturbations
+      << ",\"w\":{\"triangles\":" << s.w_triangles << ",\"dangling_edges\":" << s.w_dangling_edges
+      << ",\"isolated_vertices\":" << s.w_isolated_vertices << "},\"timings\":{";
   for (const StageTiming& t : s.timings)
     out << '"' << t.stage << "\":" << t.seconds << ',';
   out << "\"total\":" << s.total_seconds << "}}";

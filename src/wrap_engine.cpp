@@ -239,7 +239,7 @@ WrapEngine::extractSurface ()
   DefaultSurface::Output out = surface_->surface (
       *x_, vertex_positions_, parameters_.output == Output::closed, parameters_.viewpoint,
       [this] (std::size_t stride) { return sampleIsSingleLayer (vertex_positions_, vertex_weights_, stride); },
-      result_.statistics, clock_);
+      inputKey (), result_.statistics, clock_);
   surface_.reset ();
   tetrahedra_ = {};
   w_ = std::move (out.w);

@@ -250,7 +250,7 @@ TEST (SolidRepair, PointsOfWComeOnATetrahedronAtATimeAndKeepTheSurfacesTopology)
     const std::vector<std::uint8_t> on_w = pointsOfW (p.complex, x);
     const std::size_t parts = solidParts (p.complex, labels.inside);
 
-    const std::vector<std::uint32_t> moved = detail::bringPointsOfWOn (p.tetrahedra, x, p.points, labels);
+    const std::vector<std::uint32_t> moved = detail::bringPointsOfWOn (p.tetrahedra, x, p.points, labels).moved;
 
     const std::vector<LinkEdges> after = surfaceLinks (p.complex, labels.inside);
     std::size_t came_on = 0;

@@ -205,8 +205,8 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
 
   detail::DefaultSurface::Output out = stage->surface (
       x, positions, false, file.viewpoint,
-      [&] (std::size_t stride) { return detail::sampleIsSingleLayer (positions, weights, stride); }, result.statistics,
-      clock);
+      [&] (std::size_t stride) { return detail::sampleIsSingleLayer (positions, weights, stride); },
+      [&] (std::uint32_t v) { return indices (v); }, result.statistics, clock);
   if (out.split)
     indices.takeSplit (*out.split, out.w, file.points.size (), result);
   result.surface = indices.surface (out.w);

@@ -16,7 +16,7 @@ namespace pcl_wrap
   *  "spacing", "deletion": {"delta" (null: none), "largest_sinks", "sinks", "deleted", "enclosed",
   *  "not_principal"}, "manifold": {"pinch_edges_split", "pinch_vertices_split",
   *  "sheet_triangles_doubled", "single_layer", "bridge_simplices", "copies": [indices]},
-  *  "tetrahedra_moved", "collapses", "perturbations", "w": {"triangles", "dangling_edges", "isolated_vertices"},
+  *  "tetrahedra_moved", "surface_is_w", "collapses", "perturbations", "w": {"triangles", "dangling_edges", "isolated_vertices"},
   *  "timings": {"<stage>": seconds, ..., "total": seconds}}. */
 std::string
 statisticsJson (const WrapResult& result);

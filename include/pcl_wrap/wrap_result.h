@@ -137,6 +137,10 @@ struct WrapStatistics
   /** \brief The default surface: tetrahedra moved across it to make it a 2-manifold through the
     * points. */
   std::size_t tetrahedra_moved = 0;
+  /** \brief The default surface: the labelled solid's surface would have fewer points on it than
+    * the paper's W (a coarse sample, where the labels seal a hole that W keeps open), so the output
+    * is W, split into a closed 2-manifold as the raw output's WrapParameters::manifold splits it. */
+  bool surface_is_w = false;
   /** \brief The default surface: the points are a single layer (a terrain, a scan seen from one
     * side), so the surface is one open sheet through them (Output::surface) or X's boundary as a
     * closed two-sided shell, the points copied per side (Output::closed). */

@@ -86,7 +86,7 @@ DefaultSurface::labelsFor (const Subcomplex& x)
 DefaultSurface::Output
 DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
                          const std::optional<Point3>& viewpoint, const SampleIsSingleLayer& sample_is_single_layer,
-                         WrapStatistics& stats, StageClock& clock)
+                         const InputKey& input_key, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
   std::optional<SolidLabels> known;
@@ -148,13 +148,25 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   stats.tetrahedra_moved = repair.flipped;
   // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's
   // solid that leaves points off is the sign that X's layer is the surface: below.)
-  if (const std::size_t moved = single_layer ? 0 : bringPointsOfWOn (adjacency_, x, positions, labels).size ();
-      moved > 0)
+  const PointsOfWBrought brought =
+      single_layer ? PointsOfWBrought{} : bringPointsOfWOn (adjacency_, x, positions, labels);
+  if (!brought.moved.empty ())
   {
-    stats.tetrahedra_moved += moved;
+    stats.tetrahedra_moved += brought.moved.size ();
     repair.surface.reset ();
   }
   clock.stageDone ("repair");
+  if (brought.left_off > 0 && fewerPointsThanW (adjacency_, x, labels.inside))
+  {
+    // The solid's surface would hold fewer points than the paper's W (a coarse sample, where the
+    // labels seal a hole that W keeps open and bury its points): the output is W, split where it
+    // touches itself as the raw output's manifold split does, so that no point of W is lost.
+    stats.surface_is_w = true;
+    Output out;
+    out.w = extractBoundary (complex, x, true, input_key);
+    out.split = splitPinches (complex, x, out.w);
+    return out;
+  }
 
   // The boundary of the labelled solid, repaired to a manifold; where the repair leaves it
   // touching itself, split there, at the pinched vertices alone or, when an edge needs more than

@@ -69,6 +69,9 @@ public:
     * exception, if any, is dropped. */
   ~DefaultSurface ();
 
+  /** \brief Each vertex's place in the input: W's sheets are turned by it (extractBoundary()). */
+  using InputKey = std::function<std::uint32_t (std::uint32_t)>;
+
   /** \brief The surface in vertex ids: its triangles and, where they touch themselves or a
     * single layer is doubled, their split into a closed 2-manifold. */
   struct Output
@@ -82,10 +85,11 @@ public:
     * \param[in] positions per vertex
     * \param[in] closed a single layer as a closed two-sided shell rather than an open sheet
     * \param[in] viewpoint where an open sheet faces, if given (openSheet())
-    * \param[in] sample_is_single_layer asked only for a cloud that X leaves in doubt */
+    * \param[in] sample_is_single_layer asked only for a cloud that X leaves in doubt
+    * \param[in] input_key where the output is W itself, its sheets turn as the raw output's */
   Output surface (const Subcomplex& x, const std::vector<Point3>& positions, bool closed,
                   const std::optional<Point3>& viewpoint, const SampleIsSingleLayer& sample_is_single_layer,
-                  WrapStatistics& stats, StageClock& clock);
+                  const InputKey& input_key, WrapStatistics& stats, StageClock& clock);
 
 private:
   /** The labels, from the flood started by the constructor or, if none was, from one run now. */

@@ -12,18 +12,22 @@ namespace
 /** Rounds of moves: a point that a move brings on can open the way for a point next to it. */
 constexpr int MAX_ROUNDS = 8;
 
-/** The points of W off the solid's surface: on W, a tetrahedron around them not in X or a hull
-  * facet at them; off the surface, their tetrahedra all on one side (a hull facet of an inside
-  * tetrahedron counts as outside). */
-std::vector<std::uint32_t>
-pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
+enum : std::uint8_t
 {
-  enum : std::uint8_t
-  {
-    ON_W = 1,
-    HAS_INSIDE = 2,
-    HAS_OUTSIDE = 4
-  };
+  ON_W = 1,
+  HAS_INSIDE = 2,
+  HAS_OUTSIDE = 4,
+  ON_A_TRIANGLE_OF_W = 8
+};
+
+/** Per vertex: on W (a tetrahedron around it not in X, or a hull facet at it), on a triangle of W
+  * (not only on its dangling edges or as an isolated point), and the sides of its tetrahedra (a
+  * hull facet of an inside tetrahedron counts as outside); on a triangle of W only if \a w_triangles
+  * is asked for. */
+std::vector<std::uint8_t>
+pointFlags (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
+            bool w_triangles)
+{
   // One pass in order: the tetrahedra's vertices are numbered along a space-filling curve, so the
   // flags they touch stay in cache, where threads would share their lines.
   std::vector<std::uint8_t> flags (tetrahedra.complex ().numVertices (), 0);
@@ -35,14 +39,33 @@ pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const
     for (int i = 0; i < 4; ++i)
     {
       flags[tetrahedra.vertex (t, i)] |= bits;
-      if (tetrahedra.neighbour (t, i) == OUTSIDE_HULL)
-        for (int j = 1; j < 4; ++j)
-          flags[tetrahedra.vertex (t, (i + j) & 3)] |= in ? ON_W | HAS_OUTSIDE : ON_W;
+      const bool hull = tetrahedra.neighbour (t, i) == OUTSIDE_HULL;
+      // A triangle of X with t, not in X, or the hull on one side is a triangle of W.
+      const bool w_triangle =
+          w_triangles && (hull || (bits & ON_W)) && x.contains (tetrahedra.complex ().facet (3, t, i));
+      const std::uint8_t facet_bits =
+          (hull ? (in ? ON_W | HAS_OUTSIDE : ON_W) : 0) | (w_triangle ? ON_A_TRIANGLE_OF_W : 0);
+      for (int j = 1; j < 4 && facet_bits; ++j)
+        flags[tetrahedra.vertex (t, (i + j) & 3)] |= facet_bits;
     }
   }
+  return flags;
+}
+
+bool
+onSurface (std::uint8_t flags)
+{
+  return (flags & (HAS_INSIDE | HAS_OUTSIDE)) == (HAS_INSIDE | HAS_OUTSIDE);
+}
+
+/** The points of W off the solid's surface (their tetrahedra all on one side). */
+std::vector<std::uint32_t>
+pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
+{
+  const std::vector<std::uint8_t> flags = pointFlags (tetrahedra, x, inside, false);
   std::vector<std::uint32_t> off;
   for (std::uint32_t v = 0; v < flags.size (); ++v)
-    if ((flags[v] & ON_W) && (flags[v] & (HAS_INSIDE | HAS_OUTSIDE)) != (HAS_INSIDE | HAS_OUTSIDE))
+    if ((flags[v] & ON_W) && !onSurface (flags[v]))
       off.push_back (v);
   return off;
 }
@@ -75,7 +98,7 @@ bestMove (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, co
 
 } // namespace
 
-std::vector<std::uint32_t>
+PointsOfWBrought
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                   SolidLabels& labels)
 {
@@ -104,7 +127,21 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
     if (moved.size () == before)
       break;
   }
-  return moved;
+  return {std::move (moved), off.size ()};
+}
+
+bool
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
+{
+  const std::vector<std::uint8_t> flags = pointFlags (tetrahedra, x, inside, true);
+  // Points on W's triangles and off the surface against points on the surface and off them.
+  std::size_t w_only = 0, surface_only = 0;
+  for (std::uint8_t f : flags)
+  {
+    w_only += (f & ON_A_TRIANGLE_OF_W) && !onSurface (f);
+    surface_only += !(f & ON_A_TRIANGLE_OF_W) && onSurface (f);
+  }
+  return surface_only < w_only;
 }
 
 } // namespace pcl_wrap::detail

@@ -12,6 +12,13 @@
 namespace pcl_wrap::detail
 {
 
+/** \brief What bringPointsOfWOn() did. */
+struct PointsOfWBrought
+{
+  std::vector<std::uint32_t> moved; ///< the tetrahedra moved, one per point brought on
+  std::size_t left_off = 0;         ///< points of W that no move reached
+};
+
 /** \brief Brings onto the solid's surface the points that the paper's W has and the surface has
   * not, where one tetrahedron does it, so that the surface loses none of W's points that it
   * could keep by so small a move.
@@ -23,10 +30,14 @@ namespace pcl_wrap::detail
   * the tetrahedron's three other facets, and stays a closed 2-manifold wherever it was one (the
   * three are new to it, and so is the point), with its pieces and genus. Of several such
   * tetrahedra, the one whose longest edge is shortest moves; a point none reaches stays off.
-  * \param[in] positions per vertex
-  * \return the tetrahedra moved */
-std::vector<std::uint32_t>
+  * \param[in] positions per vertex */
+PointsOfWBrought
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                   SolidLabels& labels);
+
+/** \brief Does the solid's surface (its tetrahedra's labels \a inside) have fewer points on it than
+  * the triangles of the paper's W = Bd X? */
+bool
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside);
 
 } // namespace pcl_wrap::detail
