@@ -272,6 +272,41 @@ TEST (SolidRepair, PointsOfWComeOnATetrahedronAtATimeAndKeepTheSurfacesTopology)
   std::printf ("points of W brought on: %zu\n", brought);
 }
 
+TEST (SolidRepair, FewerPointsThanWCountsAsTheSurfaceAndWShowThem)
+{
+  // Labellings of X with a few tetrahedra flipped (a cube's points), or of the half of X above a
+  // plane (a sphere's, half of W's points off its surface): the answer, read from the points left
+  // off and one pass at most, against the points of the surface's links and of W's triangles,
+  // counted by brute force.
+  std::size_t fewer = 0, not_fewer = 0;
+  for (unsigned seed = 1; seed <= 20; ++seed)
+  {
+    SCOPED_TRACE (seed);
+    const RandomSample sample (seed);
+    const Pipeline& p = sample.p;
+    const detail::Subcomplex& x = sample.x;
+    detail::SolidLabels labels = flippedLabels (p, &x, 20 + seed, seed);
+    for (detail::SimplexId t = 0; t < p.complex.size (3) && seed % 2 == 0; ++t)
+      labels.inside[t] = x.contains ({3, t}) && p.points[p.complex.vertex (3, t, 0)][2] > 0.3;
+    const detail::PointsOfWBrought brought = detail::bringPointsOfWOn (p.tetrahedra, x, p.points, labels);
+
+    const std::vector<LinkEdges> links = surfaceLinks (p.complex, labels.inside);
+    std::set<std::uint32_t> on_surface, on_w;
+    for (std::uint32_t v = 0; v < links.size (); ++v)
+      if (!links[v].empty ())
+        on_surface.insert (v);
+    for (const auto& t : detail::extractBoundary (p.complex, x).triangles)
+      on_w.insert (t.begin (), t.end ());
+    const bool expected = on_surface.size () < on_w.size ();
+    EXPECT_EQ (detail::fewerPointsThanW (p.tetrahedra, x, labels.inside, brought), expected)
+        << on_surface.size () << " points on the surface, " << on_w.size () << " on W's triangles";
+    (expected ? fewer : not_fewer) += 1;
+  }
+  EXPECT_GT (fewer, 0u);
+  EXPECT_GT (not_fewer, 0u);
+  std::printf ("surfaces with fewer points than W: %zu of %zu\n", fewer, fewer + not_fewer);
+}
+
 /** A dense sphere's points and their X, which fills the ball. */
 class CutSphereRepair : public ::testing::Test
 {

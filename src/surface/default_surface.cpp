@@ -156,7 +156,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     repair.surface.reset ();
   }
   clock.stageDone ("repair");
-  if (brought.left_off > 0 && fewerPointsThanW (adjacency_, x, labels.inside))
+  if (!brought.left_off.empty () && fewerPointsThanW (adjacency_, x, labels.inside, brought))
   {
     // The solid's surface would hold fewer points than the paper's W (a coarse sample, where the
     // labels seal a hole that W keeps open and bury its points): the output is W, split where it

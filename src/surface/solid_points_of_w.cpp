@@ -17,13 +17,13 @@ enum : std::uint8_t
   ON_W = 1,
   HAS_INSIDE = 2,
   HAS_OUTSIDE = 4,
+  ON_SURFACE = HAS_INSIDE | HAS_OUTSIDE,
   ON_A_TRIANGLE_OF_W = 8
 };
 
-/** Per vertex: on W (a tetrahedron around it not in X, or a hull facet at it), on a triangle of W
-  * (not only on its dangling edges or as an isolated point), and the sides of its tetrahedra (a
-  * hull facet of an inside tetrahedron counts as outside); on a triangle of W only if \a w_triangles
-  * is asked for. */
+/** Per vertex: on W (a tetrahedron around it not in X, or a hull facet at it), the sides of its
+  * tetrahedra (a hull facet of an inside tetrahedron counts as outside) and, if \a w_triangles is
+  * asked for, on a triangle of W (not only on its dangling edges). */
 std::vector<std::uint8_t>
 pointFlags (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
             bool w_triangles)
@@ -33,16 +33,15 @@ pointFlags (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector
   std::vector<std::uint8_t> flags (tetrahedra.complex ().numVertices (), 0);
   for (std::uint32_t t = 0; t < tetrahedra.size (); ++t)
   {
-    const bool in = inside[t] != 0;
+    const bool in = inside[t] != 0, in_x = x.contains ({3, static_cast<SimplexId> (t)});
     const std::uint8_t side = in ? HAS_INSIDE : HAS_OUTSIDE;
-    const std::uint8_t bits = x.contains ({3, static_cast<SimplexId> (t)}) ? side : side | ON_W;
+    const std::uint8_t bits = in_x ? side : side | ON_W;
     for (int i = 0; i < 4; ++i)
     {
       flags[tetrahedra.vertex (t, i)] |= bits;
       const bool hull = tetrahedra.neighbour (t, i) == OUTSIDE_HULL;
-      // A triangle of X with t, not in X, or the hull on one side is a triangle of W.
-      const bool w_triangle =
-          w_triangles && (hull || (bits & ON_W)) && x.contains (tetrahedra.complex ().facet (3, t, i));
+      // A triangle of X with a tetrahedron not in X, or the hull, on one side is one of W.
+      const bool w_triangle = w_triangles && (hull || !in_x) && x.contains (tetrahedra.complex ().facet (3, t, i));
       const std::uint8_t facet_bits =
           (hull ? (in ? ON_W | HAS_OUTSIDE : ON_W) : 0) | (w_triangle ? ON_A_TRIANGLE_OF_W : 0);
       for (int j = 1; j < 4 && facet_bits; ++j)
@@ -52,22 +51,40 @@ pointFlags (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector
   return flags;
 }
 
-bool
-onSurface (std::uint8_t flags)
-{
-  return (flags & (HAS_INSIDE | HAS_OUTSIDE)) == (HAS_INSIDE | HAS_OUTSIDE);
-}
-
-/** The points of W off the solid's surface (their tetrahedra all on one side). */
-std::vector<std::uint32_t>
+/** The points of W off the solid's surface (their tetrahedra all on one side), and how many points
+  * are on the surface and off W. */
+std::pair<std::vector<std::uint32_t>, std::size_t>
 pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
 {
   const std::vector<std::uint8_t> flags = pointFlags (tetrahedra, x, inside, false);
   std::vector<std::uint32_t> off;
+  std::size_t on_surface_off_w = 0;
   for (std::uint32_t v = 0; v < flags.size (); ++v)
-    if ((flags[v] & ON_W) && !onSurface (flags[v]))
+  {
+    const bool on_surface = (flags[v] & ON_SURFACE) == ON_SURFACE;
+    if ((flags[v] & ON_W) && !on_surface)
       off.push_back (v);
-  return off;
+    on_surface_off_w += on_surface && !(flags[v] & ON_W);
+  }
+  return {std::move (off), on_surface_off_w};
+}
+
+/** Is \a v on a triangle of W: a triangle of X with a tetrahedron not in X, or the hull, on a
+  * side? */
+bool
+onATriangleOfW (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t v, Star& star)
+{
+  tetrahedra.gatherStar (v, star);
+  for (std::uint32_t t : star.tetrahedra ())
+  {
+    const int at = tetrahedra.localIndex (t, v);
+    const bool in_x = x.contains ({3, static_cast<SimplexId> (t)});
+    for (int i = 0; i < 4; ++i)
+      if (i != at && (!in_x || tetrahedra.neighbour (t, i) == OUTSIDE_HULL) &&
+          x.contains (tetrahedra.complex ().facet (3, t, i)))
+        return true;
+  }
+  return false;
 }
 
 /** The tetrahedron of \a v's star (all on one side) whose facet opposite \a v is on the surface
@@ -104,7 +121,8 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
 {
   // A move changes the side of one tetrahedron, whose other three points were on the surface
   // already: the points still off stay off, and only their stars need a second look.
-  std::vector<std::uint32_t> off = pointsOfWOffTheSurface (tetrahedra, x, labels.inside), moved;
+  auto [off, on_surface_off_w] = pointsOfWOffTheSurface (tetrahedra, x, labels.inside);
+  std::vector<std::uint32_t> moved;
   Star star;
   for (int round = 0; round < MAX_ROUNDS && !off.empty (); ++round)
   {
@@ -127,19 +145,31 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
     if (moved.size () == before)
       break;
   }
-  return {std::move (moved), off.size ()};
+  // Each move brings on a point of W: the points on the surface and off W stay as they were.
+  return {std::move (moved), std::move (off), on_surface_off_w};
 }
 
 bool
-fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside)
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
+                  const PointsOfWBrought& brought)
 {
+  // The points on W's triangles and off the surface against those on the surface and off them.
+  // First from the stars of the points left off alone, counting a point on W only by its dangling
+  // edges as W's; if that says fewer, once more over all tetrahedra, exactly.
+  Star star;
+  std::size_t w_only = 0;
+  for (std::uint32_t v : brought.left_off)
+    w_only += onATriangleOfW (tetrahedra, x, v, star);
+  if (brought.on_surface_off_w >= w_only)
+    return false;
   const std::vector<std::uint8_t> flags = pointFlags (tetrahedra, x, inside, true);
-  // Points on W's triangles and off the surface against points on the surface and off them.
-  std::size_t w_only = 0, surface_only = 0;
+  std::size_t surface_only = 0;
+  w_only = 0;
   for (std::uint8_t f : flags)
   {
-    w_only += (f & ON_A_TRIANGLE_OF_W) && !onSurface (f);
-    surface_only += !(f & ON_A_TRIANGLE_OF_W) && onSurface (f);
+    const bool on_surface = (f & ON_SURFACE) == ON_SURFACE;
+    w_only += (f & ON_A_TRIANGLE_OF_W) && !on_surface;
+    surface_only += !(f & ON_A_TRIANGLE_OF_W) && on_surface;
   }
   return surface_only < w_only;
 }

@@ -15,8 +15,9 @@ namespace pcl_wrap::detail
 /** \brief What bringPointsOfWOn() did. */
 struct PointsOfWBrought
 {
-  std::vector<std::uint32_t> moved; ///< the tetrahedra moved, one per point brought on
-  std::size_t left_off = 0;         ///< points of W that no move reached
+  std::vector<std::uint32_t> moved;    ///< the tetrahedra moved, one per point brought on
+  std::vector<std::uint32_t> left_off; ///< the points of W that no move reached
+  std::size_t on_surface_off_w = 0;    ///< points on the surface and not on W
 };
 
 /** \brief Brings onto the solid's surface the points that the paper's W has and the surface has
@@ -35,9 +36,11 @@ PointsOfWBrought
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                   SolidLabels& labels);
 
-/** \brief Does the solid's surface (its tetrahedra's labels \a inside) have fewer points on it than
-  * the triangles of the paper's W = Bd X? */
+/** \brief Does the solid's surface (its tetrahedra's labels \a inside) that bringPointsOfWOn() left
+  * (\a brought) have fewer points on it than the triangles of the paper's W = Bd X? Where the stars
+  * of the points it left off show that it has not, nothing else is looked at. */
 bool
-fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside);
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
+                  const PointsOfWBrought& brought);
 
 } // namespace pcl_wrap::detail
