@@ -59,6 +59,13 @@ areaNormal (const Triangle& t, const std::vector<Point3>& p)
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
+/** Does the oriented triangle \a t run along its edge from \a a to \a b? */
+bool
+runsFrom (const Triangle& t, std::uint32_t a, std::uint32_t b)
+{
+  return (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+}
+
 /** An edge ab of a vertex v's link, as (a, b) with a < b, and the triangle abv of Del S. */
 using LinkEdge = std::pair<std::pair<std::uint32_t, std::uint32_t>, SimplexId>;
 
@@ -1026,8 +1033,7 @@ SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
       if (on_edge.size () == 1)
       {
         const Triangle& t = triangles_[on_edge[0]];
-        const bool forward = (t[0] == ab.first && t[1] == ab.second) || (t[1] == ab.first && t[2] == ab.second) ||
-                             (t[2] == ab.first && t[0] == ab.second);
+        const bool forward = runsFrom (t, ab.first, ab.second);
         strip.clear ();
         rim.assign (1, forward ? std::pair (ab.second, ab.first) : ab);
         consider (v);
@@ -1139,7 +1145,7 @@ SheetGrowth::fillSmallHoles ()
         // Edge k of the complex's triangle joins its vertices k and k + 1; the sheet's triangle
         // goes from a to b along it.
         const std::uint32_t a = v[k], b = v[(k + 1) % 3];
-        const bool forward = (t[0] == a && t[1] == b) || (t[1] == a && t[2] == b) || (t[2] == a && t[0] == b);
+        const bool forward = runsFrom (t, a, b);
         out[forward ? a : b] = forward ? b : a;
         triangle_of[forward ? a : b] = i;
       }

@@ -21,6 +21,21 @@ enum : std::uint8_t
   ON_A_TRIANGLE_OF_W = 8
 };
 
+/** Is \a flags (pointFlags()) a point on the surface: tetrahedra on both sides around it? */
+bool
+onSurface (std::uint8_t flags)
+{
+  return (flags & ON_SURFACE) == ON_SURFACE;
+}
+
+/** Is facet \a i of tetrahedron \a t, which X holds or not as \a t_in_x says, a triangle of W: one
+  * of X with a tetrahedron not in X, or the hull, on a side? */
+bool
+facetOfW (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t t, bool t_in_x, int i)
+{
+  return (!t_in_x || tetrahedra.neighbour (t, i) == OUTSIDE_HULL) && x.contains (tetrahedra.complex ().facet (3, t, i));
+}
+
 /** Per vertex: on W (a tetrahedron around it not in X, or a hull facet at it), the sides of its
   * tetrahedra (a hull facet of an inside tetrahedron counts as outside) and, if \a w_triangles is
   * asked for, on a triangle of W (not only on its dangling edges). */
@@ -40,8 +55,7 @@ pointFlags (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector
     {
       flags[tetrahedra.vertex (t, i)] |= bits;
       const bool hull = tetrahedra.neighbour (t, i) == OUTSIDE_HULL;
-      // A triangle of X with a tetrahedron not in X, or the hull, on one side is one of W.
-      const bool w_triangle = w_triangles && (hull || !in_x) && x.contains (tetrahedra.complex ().facet (3, t, i));
+      const bool w_triangle = w_triangles && facetOfW (tetrahedra, x, t, in_x, i);
       const std::uint8_t facet_bits =
           (hull ? (in ? ON_W | HAS_OUTSIDE : ON_W) : 0) | (w_triangle ? ON_A_TRIANGLE_OF_W : 0);
       for (int j = 1; j < 4 && facet_bits; ++j)
@@ -61,16 +75,14 @@ pointsOfWOffTheSurface (const Tetrahedra& tetrahedra, const Subcomplex& x, const
   std::size_t on_surface_off_w = 0;
   for (std::uint32_t v = 0; v < flags.size (); ++v)
   {
-    const bool on_surface = (flags[v] & ON_SURFACE) == ON_SURFACE;
-    if ((flags[v] & ON_W) && !on_surface)
+    if ((flags[v] & ON_W) && !onSurface (flags[v]))
       off.push_back (v);
-    on_surface_off_w += on_surface && !(flags[v] & ON_W);
+    on_surface_off_w += onSurface (flags[v]) && !(flags[v] & ON_W);
   }
   return {std::move (off), on_surface_off_w};
 }
 
-/** Is \a v on a triangle of W: a triangle of X with a tetrahedron not in X, or the hull, on a
-  * side? */
+/** Is \a v on a triangle of W (facetOfW())? */
 bool
 onATriangleOfW (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t v, Star& star)
 {
@@ -80,8 +92,7 @@ onATriangleOfW (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t
     const int at = tetrahedra.localIndex (t, v);
     const bool in_x = x.contains ({3, static_cast<SimplexId> (t)});
     for (int i = 0; i < 4; ++i)
-      if (i != at && (!in_x || tetrahedra.neighbour (t, i) == OUTSIDE_HULL) &&
-          x.contains (tetrahedra.complex ().facet (3, t, i)))
+      if (i != at && facetOfW (tetrahedra, x, t, in_x, i))
         return true;
   }
   return false;
@@ -167,9 +178,8 @@ fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
   w_only = 0;
   for (std::uint8_t f : flags)
   {
-    const bool on_surface = (f & ON_SURFACE) == ON_SURFACE;
-    w_only += (f & ON_A_TRIANGLE_OF_W) && !on_surface;
-    surface_only += !(f & ON_A_TRIANGLE_OF_W) && on_surface;
+    w_only += (f & ON_A_TRIANGLE_OF_W) && !onSurface (f);
+    surface_only += !(f & ON_A_TRIANGLE_OF_W) && onSurface (f);
   }
   return surface_only < w_only;
 }
