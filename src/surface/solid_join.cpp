@@ -34,8 +34,10 @@ public:
   {}
 
   /** Is the gap between part \a p and part \a q along the tetrahedra of \a chain no wider than
-    * UNRESOLVED_GAP spacings: some vertex of p on the chain as near some vertex of q on it, in
-    * units of the smaller of their spacings (spacingAt())? */
+    * UNRESOLVED_GAP spacings: some vertex of p on the chain as near some other vertex of q on it,
+    * in units of the smaller of their spacings (spacingAt())? A vertex on both is no such pair:
+    * the labelling can put inside a tetrahedron from one object's surface to a point of another,
+    * across a gap the sampling resolves, and the two parts then share that point. */
   bool unresolved (const std::vector<std::uint32_t>& chain, std::uint32_t p, std::uint32_t q)
   {
     const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (chain);
@@ -58,7 +60,7 @@ public:
     }
     for (const auto& [a, spacing_a] : on_p)
       for (const auto& [b, spacing_b] : on_q)
-        if (!resolvedGap (positions_[a], positions_[b], spacing_a, spacing_b))
+        if (a != b && !resolvedGap (positions_[a], positions_[b], spacing_a, spacing_b))
           return true;
     return false;
   }
@@ -210,9 +212,9 @@ moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::ve
 } // namespace
 
 bool
-resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b)
+resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b, double gap)
 {
-  return distance (a, b) > UNRESOLVED_GAP * std::min (spacing_a, spacing_b);
+  return distance (a, b) > gap * std::min (spacing_a, spacing_b);
 }
 
 double

@@ -27,9 +27,14 @@ constexpr std::size_t FRAGMENT_VERTICES = 32;
 constexpr double UNRESOLVED_GAP = 1.5;
 
 /** \brief Do \a a and \a b, whose spacings are \a spacing_a and \a spacing_b, lie a gap apart that
-  * the sampling resolves: more than UNRESOLVED_GAP times the smaller spacing? */
+  * the sampling resolves: more than \a gap (UNRESOLVED_GAP) times the smaller spacing? */
 bool
-resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b);
+resolvedGap (const Point3& a, const Point3& b, double spacing_a, double spacing_b, double gap = UNRESOLVED_GAP);
+
+/** \brief A neck of the solid (the last tie between two parts) is cut only where it crosses a gap
+  * this many spacings wide or wider: between two small objects, not along a finger or a leg,
+  * whose points are closer along it. */
+constexpr double NECK_GAP = 4.0;
 
 /** \brief How many times longer (by its longest edge) than another way to the solid a tetrahedron
   * that would bring a floating or buried point onto the surface must be to be taken for a spike:

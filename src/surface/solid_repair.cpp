@@ -194,6 +194,16 @@ private:
     return indicesWhere (flipped_.size (), [&] (std::size_t t) { return flipped_[t] != 0; });
   }
 
+  /** Whether a move out of the solid may cut it in two: not at all, into parts each larger than
+    * HANDLE_REACH tetrahedra (a web between two objects), or into parts each with as many points
+    * as an object (FRAGMENT_VERTICES; a neck across a gap of NECK_GAP spacings). */
+  enum class Split
+  {
+    no,
+    large,
+    objects
+  };
+
   /** A connected set of tetrahedra on one side whose move would cut a handle, and how strongly
     * the labelling put them there. */
   struct HandleCut
@@ -203,6 +213,8 @@ private:
     /** A slice of the solid across a tunnel's waist: it may cut a web across a gap, and so
       * split the solid. */
     bool web = false;
+    /** A web across a neck (SmallHandlePatches::neck): it must cross a gap of NECK_GAP spacings. */
+    bool neck = false;
     bool operator<(const HandleCut& o) const
     {
       return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
@@ -237,6 +249,8 @@ private:
     std::array<std::vector<std::uint32_t>, 2> stars; // [1]: of tunnels
     for (std::size_t i = 0; i < patches.centres.size (); ++i)
     {
+      if (patches.neck[i])
+        continue; // its webs only
       tetrahedra_.gatherStar (patches.centres[i], s.star);
       stars[patches.tunnel[i]].insert (stars[patches.tunnel[i]].end (), s.star.tetrahedra ().begin (),
                                        s.star.tetrahedra ().end ());
@@ -279,10 +293,14 @@ private:
           continue; // moved in part
         if (euler_change (c.tetrahedra, s.euler) < 1)
           continue; // its handle is cut (+2: it also encloses a pocket, which may move with it)
-        if (c.web && !seversResolvedGapsOnly (c.tetrahedra, s.star))
+        const double gap = c.neck ? NECK_GAP : UNRESOLVED_GAP;
+        if (c.web && !seversResolvedGapsOnly (c.tetrahedra, s.star, gap))
           continue; // it would cut what the points sample (and so would any larger move)
-        const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s, c.web);
-        if (move.empty () || (c.web && move != c.tetrahedra && !seversResolvedGapsOnly (move, s.star)))
+        const std::vector<std::uint32_t> move = closedMove (c.tetrahedra, reached, search, s,
+                                                            c.neck  ? Split::objects
+                                                            : c.web ? Split::large
+                                                                    : Split::no);
+        if (move.empty () || (c.web && move != c.tetrahedra && !seversResolvedGapsOnly (move, s.star, gap)))
           continue; // its handle is cut, or the move would cut a side in two, leave a pinch or cut a wire
         for (std::uint32_t t : move)
         {
@@ -305,7 +323,7 @@ private:
     std::sort (all.begin (), all.end ());
     all.erase (std::unique (all.begin (), all.end (),
                             [] (const HandleCut& a, const HandleCut& b) {
-                              return a.tetrahedra == b.tetrahedra && a.web == b.web;
+                              return a.tetrahedra == b.tetrahedra && a.web == b.web && a.neck == b.neck;
                             }),
                all.end ());
     return all;
@@ -340,16 +358,17 @@ private:
                      last = patches.vertices.begin () + patches.begin[i + 1];
           const std::vector<std::uint32_t> within = tetrahedraWithin (first, last, scratch.star);
           const auto add = [&] (std::vector<std::uint32_t>& part, bool web) {
-            HandleCut plug{0.0, std::move (part), web};
+            HandleCut plug{0.0, std::move (part), web, patches.neck[i] != 0};
             for (std::uint32_t t : plug.tetrahedra)
               plug.weight += labels_.margin[t];
             if (euler_change (plug.tetrahedra, scratch.euler) >= 1)
               plugs.push_back (std::move (plug));
           };
-          for (std::vector<std::uint32_t>& part : partsOnOneSide (within, scratch.parts))
-            if (!(patches.tunnel[i] && inside (part.front ())))
-              add (part, false);
-          if (!patches.tunnel[i])
+          if (!patches.neck[i]) // a neck's webs only
+            for (std::vector<std::uint32_t>& part : partsOnOneSide (within, scratch.parts))
+              if (!(patches.tunnel[i] && inside (part.front ())))
+                add (part, false);
+          if (!patches.tunnel[i] && !patches.neck[i])
             return;
           // The solid's tetrahedra within the patch, each with the range of its corners' levels.
           std::vector<std::pair<std::uint32_t, std::array<int, 2>>> solid;
@@ -419,7 +438,7 @@ private:
   {
     std::vector<double> spacings (patches.vertices.size (), 0.0);
     for (std::size_t i = 0; i < patches.centres.size (); ++i)
-      if (patches.tunnel[i])
+      if (patches.tunnel[i] || patches.neck[i])
         for (std::uint32_t k = patches.begin[i]; k < patches.begin[i + 1]; ++k)
           spacings[k] = sampleSpacingAround (patches.vertices[k], star);
     return spacings;
@@ -492,7 +511,7 @@ private:
     * longer than UNRESOLVED_GAP times the smaller of the sample's spacings around its ends
     * (spacingAround()), or its ends must stay tied through a third point by edges the solid
     * keeps. \a star is scratch. */
-  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, Star& star)
+  bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, Star& star, double gap = UNRESOLVED_GAP)
   {
     const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
     // Per vertex of the move: its neighbours along the edges the solid keeps.
@@ -526,7 +545,7 @@ private:
           const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
           if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
             continue; // kept
-          if (resolvedGap (positions_[corners[a]], positions_[corners[b]], spacingOf (a), spacingOf (b)))
+          if (resolvedGap (positions_[corners[a]], positions_[corners[b]], spacingOf (a), spacingOf (b), gap))
             continue; // a gap the sampling resolves
           common.clear ();
           std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
@@ -540,15 +559,15 @@ private:
   /** The move that cuts a handle with \a part (sorted, all on one side): \a part, the pockets
     * it encloses (moveKeepingSidesConnected()), and the weaker parts of its side that it would leave
     * apart around a vertex of it (a pinch), grown so a few times; empty if the move changes the
-    * solid's Euler characteristic by other than +1, cuts its side in two (but into large parts
-    * where \a may_split), or leaves the surface other than a 2-manifold at its vertices. */
+    * solid's Euler characteristic by other than +1, cuts its side in two (but as \a splits
+    * allows), or leaves the surface other than a 2-manifold at its vertices. */
   std::vector<std::uint32_t> closedMove (std::vector<std::uint32_t> part, std::vector<std::uint32_t>& reached,
-                                         std::uint32_t& search, StarScratch& s, bool may_split)
+                                         std::uint32_t& search, StarScratch& s, Split splits)
   {
     const std::uint8_t side = inside (part.front ());
     for (int grown = 0; grown <= 2; ++grown)
     {
-      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search, may_split);
+      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search, splits);
       if (move.empty () || (*euler_change_) (move, s.euler) != 1)
         return {};
       for (std::uint32_t t : move)
@@ -592,14 +611,15 @@ private:
     * facets on its side stay connected without it, through at most HANDLE_REACH tetrahedra of that
     * side from each (and, for the outside, through the space beyond the hull, which a search
     * goes on looking for up to OUTSIDE_REACH tetrahedra, nearest the hull first), or, for the
-    * solid where \a may_split, if no search from them ends within HANDLE_REACH (what is left is
-    * connected or in large parts); empty if not. A move into the solid may enclose small pockets
+    * solid as \a splits allows, if no search from them ends within HANDLE_REACH (what is left is
+    * connected or in large parts), or none ends in a part of fewer than FRAGMENT_VERTICES points;
+    * empty if not. A move into the solid may enclose small pockets
     * of the outside (a search from them ends within the reach, short of the hull): they move with
     * it, as fillUnsampledVoids() would fill them. \a reached: per tetrahedron, the last \a search
     * to reach it. */
   std::vector<std::uint32_t> moveKeepingSidesConnected (const std::vector<std::uint32_t>& part,
                                                         std::vector<std::uint32_t>& reached, std::uint32_t search,
-                                                        bool may_split)
+                                                        Split splits)
   {
     const bool side = inside (part.front ());
     const auto inPart = [&] (std::uint32_t t) { return std::binary_search (part.begin (), part.end (), t); };
@@ -617,7 +637,7 @@ private:
     // One search from each seed that no earlier search reached. What is left of the side is
     // connected when one search reached all of it (and the hull, if the part touched it), or
     // when every search reached the hull, beyond which the outside is one.
-    std::size_t searches = 0, to_hull = 0, ended = 0;
+    std::size_t searches = 0, to_hull = 0, small = 0;
     std::vector<std::uint32_t> move = part, queue;
     for (std::uint32_t seed : seeds)
     {
@@ -666,13 +686,16 @@ private:
       {
         ++searches;
         to_hull += hull_reached;
-        ended += queue.size () <= HANDLE_REACH;
+        // A part of the solid that the search went all round is an object of its own if it has
+        // as many points as one (FRAGMENT_VERTICES): a split may leave it apart.
+        small += queue.size () <= HANDLE_REACH &&
+                 (splits != Split::objects || tetrahedra_.verticesOf (queue).size () < FRAGMENT_VERTICES);
       }
     }
     const bool connected = searches == 0                  ? hull_seed
                            : !side && to_hull == searches ? true
                                                           : searches == 1 && (!hull_seed || to_hull == 1);
-    if (!connected && !(side && may_split && ended == 0))
+    if (!connected && !(side && splits != Split::no && small == 0))
       return {};
     std::sort (move.begin (), move.end ());
     return move;

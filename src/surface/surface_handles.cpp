@@ -150,7 +150,10 @@ enum class HandleKind
 {
   none,   ///< no small handle
   handle, ///< a small handle, to be cut or filled
-  tunnel  ///< a thin tube between two wider parts of the surface: a tunnel through a wall, or a web
+  tunnel, ///< a thin tube between two wider parts of the surface: a tunnel through a wall, or a web
+  /** a thin tube whose two ends the surface does not join near, past at most one of which it
+    * opens out: a web between two small objects, a finger, a tail */
+  neck
 };
 
 /** The patches of a closed surface around its vertices, and what their topology says. */
@@ -251,10 +254,19 @@ public:
     for (std::uint32_t i = 0; i < s.loop_of.size () && opening < 2; ++i)
       if (s.loop_of[i].second == i && opensOut (s, stamp, i))
         open[opening++] = i;
-    if (opening < 2)
+    if (opening == 2)
+    {
+      measureFromEnds (s, stamp, open);
+      return HandleKind::tunnel;
+    }
+    if (loops != 2)
       return HandleKind::none;
-    measureFromEnds (s, stamp, open);
-    return HandleKind::tunnel;
+    std::array<std::uint32_t, 2> ends{};
+    for (std::uint32_t i = 0, k = 0; i < s.loop_of.size (); ++i)
+      if (s.loop_of[i].second == i)
+        ends[k++] = i;
+    measureFromEnds (s, stamp, ends);
+    return HandleKind::neck;
   }
 
   /** How many fans of triangles meet at \a v: the connected parts of its link, one where the
@@ -546,7 +558,7 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
   struct Found
   {
     std::uint32_t centre;
-    bool tunnel;
+    bool tunnel, neck;
     std::vector<std::pair<std::uint32_t, std::int8_t>> patch; // sorted (vertex, level)
     bool operator<(const Found& o) const { return centre < o.centre; }
   };
@@ -558,11 +570,14 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
           return;
         auto& [scratch, list] = found.local ();
         const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch);
-        if (kind == HandleKind::none || (wide && kind != HandleKind::tunnel))
+        // A neck is a web's only on a part of genus 0, where it may be the last tie of two objects.
+        if (kind == HandleKind::none || (wide && kind != HandleKind::tunnel) ||
+            (kind == HandleKind::neck && (of_genus_zero.empty () || !of_genus_zero[v])))
           return;
-        Found& f = list.emplace_back (Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, {}});
+        Found& f = list.emplace_back (
+            Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, kind == HandleKind::neck, {}});
         for (std::uint32_t w : scratch.vertices)
-          f.patch.emplace_back (w, f.tunnel ? std::int8_t (scratch.level[w]) : 0);
+          f.patch.emplace_back (w, f.tunnel || f.neck ? std::int8_t (scratch.level[w]) : 0);
         std::sort (f.patch.begin (), f.patch.end ());
       },
       256);
@@ -575,6 +590,7 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
   {
     out.centres.push_back (f.centre);
     out.tunnel.push_back (f.tunnel);
+    out.neck.push_back (f.neck);
     for (const auto& [w, level] : f.patch)
     {
       out.vertices.push_back (w);

@@ -18,11 +18,16 @@ struct SmallHandlePatches
     * filled, or a web across a gap (the tube solid), to be cut where the gap is one the sampling
     * resolves. */
   std::vector<std::uint8_t> tunnel;
+  /** Per centre: its patch, on a part of genus 0, goes round a thin tube whose two ends the rest
+    * of the surface does not join near, past at most one of which it opens out: a web that is the
+    * last tie between two small objects, but also a finger or a tail, which the points sample
+    * along their length. Its webs alone are candidates, as a tunnel's. */
+  std::vector<std::uint8_t> neck;
   /** The patch around centres[i]: the vertices vertices[begin[i] .. begin[i + 1]), ascending. */
   std::vector<std::uint32_t> begin, vertices;
-  /** Per vertex of a tunnel's patch, how much nearer it is to one end of the tube than to the
-    * other: its rings within the patch from one of the two boundary loops past which the surface
-    * opens out, less its rings from the other. A tube's cross-sections lie between two levels.
+  /** Per vertex of a tunnel's or a neck's patch, how much nearer it is to one end of the tube
+    * than to the other: its rings within the patch from one of the patch's two boundary loops
+    * (past which the surface opens out, for a tunnel), less its rings from the other. A tube's cross-sections lie between two levels.
     * 0 for the other patches' vertices. */
   std::vector<std::int8_t> level;
   /** smallHandlePatches(): whether some part of the surface has a genus (a vertex where it
@@ -49,7 +54,10 @@ struct SmallHandlePatches
   * or it goes round a thin tube: a handle's when the rest of the surface joins the patch's
   * boundary loops near the patch (within twice as many rings again), a thin part's (a finger, a
   * tail) when a loop cuts a part off, a tunnel's when the surface opens out past both ends (a hole
-  * through a wall, a web across a gap), a ring's when it does not (the tube closes far away).
+  * through a wall, a web across a gap), a ring's when it does not (the tube closes far away). On a
+  * part of genus 0, a tube with two boundary loops that the rest of the surface does not join near
+  * is a neck (SmallHandlePatches::neck) where it does not open out past both: the last tie between
+  * two small objects, or a finger.
   * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
   * \param[in] near if given, only centres within 2 HANDLE_RINGS rings of one of these vertices
   * \param[in] positions if given, per vertex: the parts of genus 0 are looked at near sharp saddles */
