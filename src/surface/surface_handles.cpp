@@ -173,8 +173,10 @@ public:
   /** Does the patch of rings_ rings around \a v hold a handle or go round a handle's tube?
     * A tube whose ends the surface joins only far away is a tunnel when the surface opens out
     * past both of them: a hole through a wall that the points do not resolve, or a web across a
-    * gap between two walls (a solid tube, which may also be a thin wire the points do show). */
-  HandleKind onSmallHandle (std::uint32_t v, PatchScratch& s) const
+    * gap between two walls (a solid tube, which may also be a thin wire the points do show).
+    * With \a necks, a tube with two boundary loops past which the surface does not open out
+    * both ways is a neck. */
+  HandleKind onSmallHandle (std::uint32_t v, PatchScratch& s, bool necks) const
   {
     if (s.in_patch.empty ())
     {
@@ -238,9 +240,12 @@ public:
         s.loops.attach (p, q);
     }
     long loops = 0;
+    std::array<std::uint32_t, 2> ends{}; // the first two loops
     for (std::uint32_t i = 0; i < s.loop_of.size (); ++i)
     {
       s.loop_of[i].second = s.loops.find (i);
+      if (s.loop_of[i].second == i && loops < 2)
+        ends[loops] = i;
       loops += s.loop_of[i].second == i;
     }
     if (2 - chi - loops >= 2)
@@ -259,12 +264,8 @@ public:
       measureFromEnds (s, stamp, open);
       return HandleKind::tunnel;
     }
-    if (loops != 2)
+    if (!necks || loops != 2)
       return HandleKind::none;
-    std::array<std::uint32_t, 2> ends{};
-    for (std::uint32_t i = 0, k = 0; i < s.loop_of.size (); ++i)
-      if (s.loop_of[i].second == i)
-        ends[k++] = i;
     measureFromEnds (s, stamp, ends);
     return HandleKind::neck;
   }
@@ -569,10 +570,10 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
         if (!look[v])
           return;
         auto& [scratch, list] = found.local ();
-        const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch);
-        // A neck is a web's only on a part of genus 0, where it may be the last tie of two objects.
-        if (kind == HandleKind::none || (wide && kind != HandleKind::tunnel) ||
-            (kind == HandleKind::neck && (of_genus_zero.empty () || !of_genus_zero[v])))
+        // A neck only on a part of genus 0, where it may be the last tie of two objects.
+        const bool necks = !of_genus_zero.empty () && of_genus_zero[v];
+        const HandleKind kind = finder.onSmallHandle (static_cast<std::uint32_t> (v), scratch, necks);
+        if (kind == HandleKind::none || (wide && kind != HandleKind::tunnel))
           return;
         Found& f = list.emplace_back (
             Found{static_cast<std::uint32_t> (v), kind == HandleKind::tunnel, kind == HandleKind::neck, {}});
