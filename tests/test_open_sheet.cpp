@@ -110,6 +110,19 @@ expectTwoSidedShell (const std::vector<Point3>& points)
   return r;
 }
 
+/** \a n points uniform in the slab [0, 1]^2 x [0, 0.02], about one and a half median spacings
+  * thick at 1,500 points. */
+std::vector<Point3>
+slabSample (std::size_t n, unsigned seed)
+{
+  std::mt19937_64 random (seed);
+  std::uniform_real_distribution<double> u (0.0, 1.0);
+  std::vector<Point3> p (n);
+  for (Point3& q : p)
+    q = {u (random), u (random), 0.02 * u (random)};
+  return p;
+}
+
 /** Median spacing of a uniform sample of n points over [-1, 1]^2. */
 double
 spacing (std::size_t n)
@@ -155,6 +168,24 @@ TEST (OpenSheet, TerrainWithNoiseOfASpacingIsOneSheet)
   // Closed, it is the two-sided shell around X.
   const WrapResult shell = expectTwoSidedShell (terrain);
   EXPECT_GE (double (pointsOnSurface (shell, terrain.size ()).size ()), 0.995 * double (terrain.size ()));
+}
+
+TEST (OpenSheet, NoisyLayersKeepEveryPointOfW)
+{
+  // Where a layer's noise thickens X, a point of W can lie below the sheet with no Delaunay face
+  // around it that joins the sheet (no tent, no cone reaches it): it is pinned to a sheet
+  // triangle or boundary edge among its Delaunay neighbours'. Terrains with noise of 0.3 mean
+  // spacings, and slabs of points about one and a half median spacings thick.
+  for (unsigned seed = 1; seed <= 4; ++seed)
+    for (const bool slab : {false, true})
+    {
+      const std::vector<Point3> points =
+          slab ? slabSample (1500, 12 + seed) : noisyTerrainSample (3000, 30 + seed, 0.3);
+      SCOPED_TRACE ((slab ? "slab " : "terrain ") + std::to_string (seed));
+      const WrapResult r = expectOpenSheet (points, 1, 0.999, WrapParameters (), 2);
+      EXPECT_GE (pointsOnSurface (r, points.size ()).size (),
+                 pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ());
+    }
 }
 
 TEST (OpenSheet, SmallTerrainWithNoiseOfASpacingIsOneSheet)

@@ -287,6 +287,13 @@ public:
     * is an edge on the sheets' boundary, and its cone one triangle more on it. */
   std::size_t coneOverMissedPoints (const Tetrahedra& tetrahedra);
 
+  /** Brings each point that tents and cones did not reach onto the sheets whatever the Delaunay
+    * faces around it (returns how many): the sheet triangle abc at one of its Delaunay neighbours
+    * becomes abv, bcv, cav, or a boundary edge ab there gets the triangle from the point over it,
+    * the smallest such with no edge across a gap. The new triangles need not be Delaunay faces and
+    * have no id (NO_ID); each is tied to its sheet as a hole's filling is. */
+  std::size_t pinMissedPoints (const Tetrahedra& tetrahedra);
+
   /** Closes the holes of the sheets smaller than a gap the sampling resolves (where the growth
     * passed triangles by, or a long triangle was left out) by ear clipping, the shortest new edge
     * first; the filling's triangles need not be Delaunay and have no id (NO_ID). */
@@ -1119,6 +1126,106 @@ SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
   return brought;
 }
 
+std::size_t
+SheetGrowth::pinMissedPoints (const Tetrahedra& tetrahedra)
+{
+  // Named, not bound: a lambda below captures them (C++17).
+  const auto by_vertex = trianglesAroundVertices ();
+  const std::vector<std::uint32_t>&start = by_vertex.first, &around = by_vertex.second;
+  // Triangles replaced or given a neighbour in this round: the index no longer tells their edges.
+  std::vector<std::uint8_t> touched (triangles_.size (), 0);
+  // The triangle other than \a i on edge ab, or NONE: on a manifold sheet there is at most one.
+  const auto across = [&] (std::uint32_t i, std::uint32_t a, std::uint32_t b) {
+    for (std::uint32_t k = start[a]; k < start[a + 1]; ++k)
+    {
+      const Triangle& t = triangles_[around[k]];
+      if (around[k] != i && (t[0] == b || t[1] == b || t[2] == b))
+        return around[k];
+    }
+    return NONE;
+  };
+  std::size_t brought = 0;
+  Star star;
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t v = 0; v < complex_.numVertices (); ++v)
+  {
+    if (on_[v] || tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+      continue;
+    tetrahedra.gatherStar (v, star);
+    near.clear ();
+    for (std::uint32_t t : star.tetrahedra ())
+      for (int k = 0; k < 4; ++k)
+        if (const std::uint32_t u = tetrahedra.vertex (t, k); on_[u])
+          near.insert (near.end (), around.begin () + start[u], around.begin () + start[u + 1]);
+    std::sort (near.begin (), near.end ());
+    near.erase (std::unique (near.begin (), near.end ()), near.end ());
+    // The best so far: triangle i, and its edge k (a flap over it) or k = 3 (a tent over it); the
+    // fewest new triangles folded over against it, then the smallest.
+    std::uint32_t best = NONE;
+    int best_edge = 0, best_folds = 0;
+    double best_size = 0;
+    for (std::uint32_t i : near)
+    {
+      const Triangle& t = triangles_[i];
+      if (touched[i] || edgeSpansGap (t[0], v) || edgeSpansGap (t[1], v) || edgeSpansGap (t[2], v))
+        continue;
+      const double d[3] = {distance (t[0], v), distance (t[1], v), distance (t[2], v)};
+      const std::array<double, 3> n = areaNormal (t, positions_);
+      const auto folded = [&] (const Triangle& f) {
+        const std::array<double, 3> m = areaNormal (f, positions_);
+        return n[0] * m[0] + n[1] * m[1] + n[2] * m[2] <= 0 ? 1 : 0;
+      };
+      for (int k = 0; k < 4; ++k)
+      {
+        if (k < 3 && across (i, t[k], t[(k + 1) % 3]) != NONE)
+          continue; // no boundary edge
+        const double size = k < 3 ? std::max (d[k], d[(k + 1) % 3]) : std::max ({d[0], d[1], d[2]});
+        const int folds = k < 3 ? folded ({t[(k + 1) % 3], t[k], v})
+                                : folded ({t[0], t[1], v}) + folded ({t[1], t[2], v}) + folded ({t[2], t[0], v});
+        if (best == NONE || std::pair (folds, size) < std::pair (best_folds, best_size))
+        {
+          best = i;
+          best_edge = k;
+          best_folds = folds;
+          best_size = size;
+        }
+      }
+    }
+    if (best == NONE)
+      continue;
+    const Triangle abc = triangles_[best];
+    touched[best] = 1;
+    const auto add = [&] (const Triangle& t, std::uint32_t partner) {
+      fill_partner_.push_back ({static_cast<std::uint32_t> (triangles_.size ()), partner});
+      triangles_.push_back (t);
+      ids_.push_back (NO_ID);
+    };
+    if (best_edge < 3)
+      add ({abc[(best_edge + 1) % 3], abc[best_edge], v}, best);
+    else
+    {
+      // Tied to the sheet across each rim edge; their ids are gone, so edges no longer tie them.
+      for (int k = 0; k < 3; ++k)
+        if (const std::uint32_t n = across (best, abc[k], abc[(k + 1) % 3]); n != NONE)
+        {
+          fill_partner_.push_back ({best, n});
+          touched[n] = 1; // its edge with abc is on a triangle the index does not hold
+        }
+      triangles_[best] = {abc[0], abc[1], v};
+      ids_[best] = NO_ID;
+      for (int k = 1; k < 3; ++k)
+      {
+        const std::uint32_t n = across (best, abc[k], abc[(k + 1) % 3]);
+        add ({abc[k], abc[(k + 1) % 3], v}, n == NONE ? best : n);
+        fill_partner_.push_back ({static_cast<std::uint32_t> (triangles_.size () - 1), best});
+      }
+    }
+    on_[v] = 1;
+    ++brought;
+  }
+  return brought;
+}
+
 void
 SheetGrowth::fillSmallHoles ()
 {
@@ -1305,6 +1412,8 @@ openSheet (const Tetrahedra& tetrahedra, Boundary w, const std::vector<Point3>& 
   {}
   growth.restoreCrumbs ();
   growth.fillSmallHoles ();
+  while (growth.pinMissedPoints (tetrahedra) > 0)
+  {}
   // A sheet with no up or down faces out of the labelled solid: per triangle on its surface, +-area.
   const auto out_of_solid = [&] (const std::vector<Triangle>& triangles, const std::vector<SimplexId>& ids) {
     const Boundary solid = extractSolidBoundary (tetrahedra, inside ());

@@ -43,7 +43,9 @@ namespace pcl_wrap::detail
   * the other three facets; where none is, a cone: a strip of up to three sheet triangles, or an
   * edge of a sheet's boundary, is replaced by the Delaunay triangles from the point over its rim.
   * A crumb the growth left beside a much larger sheet is taken off first, so that its points come
-  * onto that sheet. Holes smaller than a gap are closed by ear clipping.
+  * onto that sheet. Holes smaller than a gap are closed by ear clipping. A point that no tent or
+  * cone reaches is pinned: a sheet triangle or boundary edge at one of its Delaunay neighbours
+  * gets the triangles from the point over it, which need not be Delaunay faces.
   *
   * With \a noisy (a layer with noise across it of about a spacing, which only a coarser sample
   * found), the growth does not turn the sheet over: each point has a direction across the layer,
