@@ -157,7 +157,10 @@ printSummary (std::ostream& out, const WrapStatistics& s)
     for (int c = 0; c < 3; ++c)
       del[k] += s.simplices[k][c];
   out << "points:        " << s.points_input << " given, " << s.points_used << " used, " << s.points_skipped
-      << " skipped (non-finite), " << s.points_duplicate << " duplicate, " << s.points_hidden << " hidden\n"
+      << " skipped (non-finite), " << s.points_duplicate << " duplicate, " << s.points_hidden << " hidden";
+  if (s.points_apart > 0)
+    out << ", " << s.points_apart << " apart from all others (off the surface)";
+  out << "\n"
       << "Del S:         dimension " << s.triangulation_dimension << ", " << del[0] << " vertices, " << del[1]
       << " edges, " << del[2] << " triangles, " << del[3] << " tetrahedra\n"
       << "sinks:         ";

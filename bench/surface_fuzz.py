@@ -10,8 +10,8 @@ outliers, and single layers (terrains, spherical caps, half cylinders, slabs), b
 with --closed. Checks that every run succeeds and that its surface is what docs/surface.md
 promises: a closed, oriented 2-manifold (every edge on two triangles, once each way, every
 vertex's triangles one fan), or for a single layer by default one oriented sheet, through at
-least as many input points as the paper's W (--raw); the last column counts the surfaces through
-fewer. A Markdown table per family; exits with status 1 if a run fails or a surface breaks a
+least as many input points as the paper's W (--raw), but for the points apart from all others that
+it leaves off (outliers); the last column counts the surfaces through fewer. A Markdown table per family; exits with status 1 if a run fails or a surface breaks a
 promise. Uses BUILD_DIR/apps/pcl_wrap.
 """
 import json
@@ -125,7 +125,7 @@ def run(build, points, extra, work):
     vertices, tris = single_layers.read_obj(out)
     used, copies = s["points"]["input"] - s["points"]["skipped"], s["manifold"]["copies"]
     on = {v if v < used else copies[v - used] for v in np.unique(tris).tolist()}
-    on_w = np.unique(single_layers.read_obj(raw)[1])
+    on_w = set(np.unique(single_layers.read_obj(raw)[1]).tolist()) - set(s["apart"])
     problem = None
     if s["triangulation_dimension"] == 3 and len(tris):
         problem = broken(vertices, tris, s["manifold"]["single_layer"] and "--closed" not in extra)

@@ -124,6 +124,7 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
   py::dict out = surface (result.surface);
   out["skipped"] = vector<std::int64_t> (result.skipped);
   out["hidden"] = vector<std::int64_t> (result.hidden);
+  out["apart"] = vector<std::int64_t> (result.apart);
   out["copies"] = vector<std::int64_t> (result.copies);
   std::vector<std::int64_t> duplicates;
   for (const auto& [duplicate, kept] : result.duplicates)

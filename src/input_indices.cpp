@@ -61,6 +61,17 @@ InputIndices::complex (const SimplicialComplex& complex, const Classification& c
   return lists;
 }
 
+std::vector<PointIndex>
+InputIndices::sortedPoints (const std::vector<std::uint32_t>& vertices) const
+{
+  std::vector<PointIndex> points;
+  points.reserve (vertices.size ());
+  for (std::uint32_t v : vertices)
+    points.push_back (of_vertex_[v]);
+  std::sort (points.begin (), points.end ());
+  return points;
+}
+
 InputIndices
 InputIndices::reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const
 {

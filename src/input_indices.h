@@ -39,6 +39,9 @@ public:
   /** \brief \a w in point indices. */
   WrapSurface surface (const Boundary& w) const;
 
+  /** \brief The points that \a vertices are, in ascending order. */
+  std::vector<PointIndex> sortedPoints (const std::vector<std::uint32_t>& vertices) const;
+
   /** \brief The complex in point indices, with each simplex's class and membership in \a x. */
   std::array<SimplexList, 4> complex (const SimplicialComplex& complex, const Classification& classification,
                                       const Subcomplex& x) const;

@@ -27,8 +27,10 @@ statisticsJson (const WrapResult& result)
   };
   out << std::setprecision (9) << "{\"points\":{\"input\":" << s.points_input << ",\"used\":" << s.points_used
       << ",\"skipped\":" << s.points_skipped << ",\"duplicate\":" << s.points_duplicate
-      << ",\"hidden\":" << s.points_hidden << "},\"hidden\":";
+      << ",\"hidden\":" << s.points_hidden << ",\"apart\":" << s.points_apart << "},\"hidden\":";
   writeList (out, result.hidden);
+  out << ",\"apart\":";
+  writeList (out, result.apart);
   out << ",\"triangulation_dimension\":" << s.triangulation_dimension << ",\"simplices\":{";
   for (int k = 0; k <= 3; ++k)
   {

@@ -244,6 +244,8 @@ WrapEngine::extractSurface ()
   tetrahedra_ = {};
   w_ = std::move (out.w);
   split_ = std::move (out.split);
+  result_.apart = input_indices_.sortedPoints (out.apart);
+  result_.statistics.points_apart = result_.apart.size ();
 }
 
 void

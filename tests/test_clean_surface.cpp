@@ -337,6 +337,35 @@ TEST (CleanSurface, APointInAFoldIsNotDrawnIntoASpike)
   }
 }
 
+TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
+{
+  // A closed surface through a point far from all others is a spike to it (or, where the paper's
+  // W holds several such points by triangles, sheets across the scene). The default surface
+  // leaves such a point off and says so; every other point stays on it.
+  std::vector<Point3> sphere = sphereSample (3000, 1);
+  const std::vector<std::vector<Point3>> outliers = {{{1e3, 0, 0}},
+                                                     {{0, 0, 6}},
+                                                     {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}}};
+  for (const std::vector<Point3>& far : outliers)
+  {
+    std::vector<Point3> points = sphere;
+    points.insert (points.end (), far.begin (), far.end ());
+    SCOPED_TRACE (std::to_string (far.size ()) + " outliers, the first at x = " + std::to_string (far[0][0]));
+    expectCleanSurface (points, 1, 0);
+    const WrapResult r = computeWrap (points);
+    std::vector<PointIndex> expected;
+    for (std::size_t i = 0; i < far.size (); ++i)
+      expected.push_back (sphere.size () + i);
+    EXPECT_EQ (r.apart, expected);
+    EXPECT_EQ (r.statistics.points_apart, far.size ());
+    std::set<PointIndex> on;
+    for (const auto& t : r.surface.triangles)
+      on.insert (t.begin (), t.end ());
+    EXPECT_EQ (on.size (), sphere.size ()) << "every point of the sphere on it";
+    EXPECT_LT (longestEdgeInMedianEdges (points), 4.0);
+  }
+}
+
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
 {
   const auto points = load ("kitten.xyz");

@@ -188,6 +188,16 @@ TEST (OpenSheet, NoisyLayersKeepEveryPointOfW)
     }
 }
 
+TEST (OpenSheet, AnOutlierAboveTheLayerIsLeftOffAndReported)
+{
+  std::vector<Point3> points = terrainSample (5000, 5);
+  points.push_back ({0.3, 0.2, 3.0});
+  const WrapResult r = expectOpenSheet (points, 1, 0.999);
+  EXPECT_EQ (r.apart, std::vector<PointIndex>{5000});
+  for (const auto& t : r.surface.triangles)
+    EXPECT_TRUE (t[0] != 5000 && t[1] != 5000 && t[2] != 5000);
+}
+
 TEST (OpenSheet, SmallTerrainWithNoiseOfASpacingIsOneSheet)
 {
   // 2,000 points: the sample is one point in 7, still 256 of them.

@@ -298,7 +298,7 @@ TEST (SolidRepair, FewerPointsThanWCountsAsTheSurfaceAndWShowThem)
     for (const auto& t : detail::extractBoundary (p.complex, x).triangles)
       on_w.insert (t.begin (), t.end ());
     const bool expected = on_surface.size () < on_w.size ();
-    EXPECT_EQ (detail::fewerPointsThanW (p.tetrahedra, x, labels.inside, brought), expected)
+    EXPECT_EQ (detail::fewerPointsThanW (p.tetrahedra, x, labels, brought), expected)
         << on_surface.size () << " points on the surface, " << on_w.size () << " on W's triangles";
     (expected ? fewer : not_fewer) += 1;
   }

@@ -210,6 +210,8 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   if (out.split)
     indices.takeSplit (*out.split, out.w, file.points.size (), result);
   result.surface = indices.surface (out.w);
+  result.apart = indices.sortedPoints (out.apart);
+  result.statistics.points_apart = result.apart.size ();
   clock.stageDone ("output");
 }
 

@@ -105,6 +105,7 @@ struct WrapStatistics
   std::size_t points_skipped = 0;   ///< non-finite coordinates or weight
   std::size_t points_duplicate = 0; ///< same position as a kept point
   std::size_t points_hidden = 0;    ///< empty power cell (weighted input only)
+  std::size_t points_apart = 0;     ///< the default surface: apart from all others, left off it
   int triangulation_dimension = -1; ///< -1 (no point), 0, 1, 2 or 3
 
   /** \brief Simplices of Del S per dimension and class: [dimension][class]. */
@@ -174,6 +175,11 @@ struct WrapResult
   WrapSurface w;
   std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
   std::vector<PointIndex> hidden;    ///< points with an empty power cell
+  /** \brief The default surface: points apart from all others (far outliers: each more than 16
+    * median spacings from its nearest neighbour, and most of its Delaunay neighbours more than 16
+    * times nearer theirs), which it leaves off, where a closed surface through them would be a
+    * spike (docs/surface.md, "Points apart"). */
+  std::vector<PointIndex> apart;
   /** \brief The points copied to split the output where it touches itself (the default surface,
     * or the raw output with WrapParameters::manifold). Point index n + k (n = the number of input points) in
     * surface.triangles is a copy of point copies[k]. */

@@ -43,6 +43,7 @@ class WrapResult:
     skipped           input rows with a non-finite coordinate or weight
     duplicates        (d, 2): a row at the same position as a kept row, and that row
     hidden            weighted input: points whose power cell is empty (never on the surface)
+    apart             default surface: points apart from all others (outliers), left off it
     copies            the input point each appended vertex copies
     dangling_edges    raw output: (e, 2) edges of X with no triangle
     isolated_vertices raw output: vertices of X with no edge
@@ -68,6 +69,7 @@ class WrapResult:
         self.skipped = fields["skipped"]
         self.duplicates = fields["duplicates"]
         self.hidden = fields["hidden"]
+        self.apart = fields["apart"]
         self.copies = copies
         self.dangling_edges = fields["dangling_edges"]
         self.isolated_vertices = fields["isolated_vertices"]

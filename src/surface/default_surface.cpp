@@ -3,12 +3,14 @@
 #include "surface/default_surface.h"
 
 #include "surface/open_sheet.h"
+#include "surface/points_apart.h"
 #include "surface/single_layer.h"
 #include "surface/solid_pinch_split.h"
 #include "surface/solid_points_of_w.h"
 #include "surface/solid_repair.h"
 #include "util/parallel_for_each.h"
 
+#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <utility>
@@ -38,6 +40,23 @@ verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uin
   for (std::size_t v = 0; v < n; ++v)
     count += on[v].load (std::memory_order_relaxed);
   return count;
+}
+
+/** The points flagged in \a apart (per vertex, pointsApart()) that \a surface leaves off. */
+std::vector<std::uint32_t>
+offTheSurface (const std::vector<std::uint8_t>& apart, const Boundary& surface)
+{
+  std::vector<std::uint32_t> off;
+  if (std::find (apart.begin (), apart.end (), 1) == apart.end ())
+    return off;
+  std::vector<std::uint8_t> on (apart.size (), 0);
+  for (const auto& t : surface.triangles)
+    for (std::uint32_t v : t)
+      on[v] = 1;
+  for (std::uint32_t v = 0; v < apart.size (); ++v)
+    if (apart[v] && !on[v])
+      off.push_back (v);
+  return off;
 }
 
 } // namespace
@@ -118,6 +137,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     out.w = openSheet (
         adjacency_, std::move (candidates), positions, [&] { return known ? known->inside : labelsFor (x).inside; },
         viewpoint, noisy);
+    out.apart = offTheSurface (pointsApart (complex, positions), out.w); // the sheet's gaps leave them off
     clock.stageDone ("sheet");
     return out;
   }
@@ -144,6 +164,20 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {
       labels.inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
     });
+  // A point apart from all others (an outlier) is on no surface the points show, and a closed
+  // surface through it would be a spike: its tetrahedra are outside, and the repair leaves it off.
+  if (x.size (3) > 0)
+  {
+    labels.apart = pointsApart (complex, positions);
+    if (std::find (labels.apart.begin (), labels.apart.end (), 1) == labels.apart.end ())
+      labels.apart.clear ();
+    else
+      parallelForEach (labels.inside.size (), [&] (std::size_t t) {
+        for (int i = 0; i < 4; ++i)
+          if (labels.apart[adjacency_.vertex (static_cast<std::uint32_t> (t), i)])
+            labels.inside[t] = 0;
+      });
+  }
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
   // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's
@@ -156,7 +190,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     repair.surface.reset ();
   }
   clock.stageDone ("repair");
-  if (!brought.left_off.empty () && fewerPointsThanW (adjacency_, x, labels.inside, brought))
+  if (!brought.left_off.empty () && fewerPointsThanW (adjacency_, x, labels, brought))
   {
     // The solid's surface would hold fewer points than the paper's W (a coarse sample, where the
     // labels seal a hole that W keeps open and bury its points): the output is W, split where it
@@ -207,6 +241,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   }
   if (pinched_solid)
     out.split = splitPinches (complex, *pinched_solid, out.w);
+  out.apart = offTheSurface (labels.apart, out.w); // a move at a neighbour may have taken one on
   return out;
 }
 

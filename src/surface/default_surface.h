@@ -78,6 +78,7 @@ public:
   {
     Boundary w;
     std::optional<ManifoldSplit> split;
+    std::vector<std::uint32_t> apart; ///< the points apart from all others, left off (pointsApart())
   };
 
   /** \brief The surface, once X is known; call once. Records the stages "labelling" and

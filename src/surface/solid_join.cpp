@@ -384,7 +384,7 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
   Star star;
   for (std::uint32_t v = 0; v < num_vertices; ++v)
   {
-    if (on_solid[v])
+    if (on_solid[v] || labels.isApart (v))
       continue;
     tetrahedra.gatherStar (v, star);
     // The way the point comes on otherwise: a tetrahedron of its star that touches the solid,

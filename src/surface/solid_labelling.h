@@ -23,6 +23,11 @@ struct SolidLabels
   std::vector<std::uint8_t> inside; ///< per tetrahedron: 1 inside, 0 outside
   std::vector<float> margin;        ///< per tetrahedron: how much the winning vote beat the other
   bool hull = false;                ///< no vote enclosed anything: every tetrahedron is inside
+  /** Per vertex: 1 for a point apart from all others (pointsApart()), which the solid leaves off
+    * its surface; empty where none is. */
+  std::vector<std::uint8_t> apart;
+
+  bool isApart (std::uint32_t v) const { return !apart.empty () && apart[v]; }
 };
 
 /** \brief Labels the Delaunay tetrahedra inside or outside the sampled solid.

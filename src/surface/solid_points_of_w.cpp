@@ -141,7 +141,7 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
     std::size_t kept = 0;
     for (std::uint32_t v : off)
     {
-      if (tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON)
+      if (tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON || labels.isApart (v))
         continue;
       const std::uint32_t t = bestMove (tetrahedra, positions, labels.inside, v, star);
       if (t == OUTSIDE_HULL)
@@ -161,24 +161,26 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
 }
 
 bool
-fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const SolidLabels& labels,
                   const PointsOfWBrought& brought)
 {
+  const std::vector<std::uint8_t>& inside = labels.inside;
   // The points on W's triangles and off the surface against those on the surface and off them.
   // First from the stars of the points left off alone, counting a point on W only by its dangling
   // edges as W's; if that says fewer, once more over all tetrahedra, exactly.
   Star star;
   std::size_t w_only = 0;
   for (std::uint32_t v : brought.left_off)
-    w_only += onATriangleOfW (tetrahedra, x, v, star);
+    w_only += !labels.isApart (v) && onATriangleOfW (tetrahedra, x, v, star);
   if (brought.on_surface_off_w >= w_only)
     return false;
   const std::vector<std::uint8_t> flags = pointFlags (tetrahedra, x, inside, true);
   std::size_t surface_only = 0;
   w_only = 0;
-  for (std::uint8_t f : flags)
+  for (std::uint32_t v = 0; v < flags.size (); ++v)
   {
-    w_only += (f & ON_A_TRIANGLE_OF_W) && !onSurface (f);
+    const std::uint8_t f = flags[v];
+    w_only += (f & ON_A_TRIANGLE_OF_W) && !onSurface (f) && !labels.isApart (v);
     surface_only += !(f & ON_A_TRIANGLE_OF_W) && onSurface (f);
   }
   return surface_only < w_only;

@@ -30,17 +30,19 @@ struct PointsOfWBrought
   * opposite the point is on the surface changes side: the surface then runs over the point by
   * the tetrahedron's three other facets, and stays a closed 2-manifold wherever it was one (the
   * three are new to it, and so is the point), with its pieces and genus. Of several such
-  * tetrahedra, the one whose longest edge is shortest moves; a point none reaches stays off.
+  * tetrahedra, the one whose longest edge is shortest moves; a point none reaches stays off, and
+  * so does a point apart from all others (SolidLabels::apart).
   * \param[in] positions per vertex */
 PointsOfWBrought
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,
                   SolidLabels& labels);
 
-/** \brief Does the solid's surface (its tetrahedra's labels \a inside) that bringPointsOfWOn() left
-  * (\a brought) have fewer points on it than the triangles of the paper's W = Bd X? Where the stars
-  * of the points it left off show that it has not, nothing else is looked at. */
+/** \brief Does the solid's surface (its tetrahedra's \a labels) that bringPointsOfWOn() left
+  * (\a brought) have fewer points on it than the triangles of the paper's W = Bd X, the points
+  * apart from all others (SolidLabels::apart) not counted? Where the stars of the points it left
+  * off show that it has not, nothing else is looked at. */
 bool
-fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<std::uint8_t>& inside,
+fewerPointsThanW (const Tetrahedra& tetrahedra, const Subcomplex& x, const SolidLabels& labels,
                   const PointsOfWBrought& brought);
 
 } // namespace pcl_wrap::detail

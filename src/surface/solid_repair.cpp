@@ -1109,6 +1109,8 @@ private:
         return members (s, parts, p);
       return {};
     }
+    if (labels_.isApart (v))
+      return {}; // no surface the points show passes through it
     if ((parts.count[0] == 0 && !staysBuried (v)) || parts.count[1] == 0)
     {
       // Buried or floating: move the weakest tetrahedron of the star that touches the other side;
