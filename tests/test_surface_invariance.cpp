@@ -107,6 +107,13 @@ TEST (SurfaceInvariance, PointsOnACurveGiveTheCurve)
   EXPECT_EQ (r.surface.dangling_edges, raw.surface.dangling_edges);
   EXPECT_EQ (r.surface.dangling_edges.size (), 999u);
   EXPECT_TRUE (r.copies.empty ());
+  // With a far outlier beside it, X ties the outlier to the curve by a triangle: the curve stays
+  // the curve, and the outlier is left off.
+  points.push_back ({0, 5, 0});
+  const WrapResult beside = computeWrap (points);
+  EXPECT_TRUE (beside.surface.triangles.empty ());
+  EXPECT_EQ (beside.surface.dangling_edges, raw.surface.dangling_edges);
+  EXPECT_EQ (beside.apart, std::vector<PointIndex>{1000});
 }
 
 TEST (SurfaceInvariance, DoesNotDependOnTheOrderOfThePoints)

@@ -59,6 +59,41 @@ offTheSurface (const std::vector<std::uint8_t>& apart, const Boundary& surface)
   return off;
 }
 
+/** Where X has no tetrahedron and each of its triangles has a point apart (\a apart, per vertex)
+  * among its corners, a curve with outliers beside it that X ties by triangles: the curve, the
+  * paper's W less its simplices at those points (the triangles' other edges become edges of the
+  * curve). Otherwise nothing. */
+std::optional<Boundary>
+curveLessPointsApart (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& apart)
+{
+  if (x.size (3) > 0 || x.size (2) == 0 || std::find (apart.begin (), apart.end (), 1) == apart.end ())
+    return std::nullopt;
+  for (SimplexId t = 0; t < complex.size (2); ++t)
+  {
+    const std::uint32_t* v = complex.vertices (2, t);
+    if (x.contains ({2, t}) && !apart[v[0]] && !apart[v[1]] && !apart[v[2]])
+      return std::nullopt;
+  }
+  const Boundary w = extractBoundary (complex, x);
+  Boundary curve;
+  const auto keep = [&] (std::uint32_t a, std::uint32_t b) {
+    if (!apart[a] && !apart[b])
+      curve.dangling_edges.push_back ({std::min (a, b), std::max (a, b)});
+  };
+  for (const auto& t : w.triangles)
+    for (int k = 0; k < 3; ++k)
+      keep (t[k], t[(k + 1) % 3]);
+  for (const auto& e : w.dangling_edges)
+    keep (e[0], e[1]);
+  std::sort (curve.dangling_edges.begin (), curve.dangling_edges.end ());
+  curve.dangling_edges.erase (std::unique (curve.dangling_edges.begin (), curve.dangling_edges.end ()),
+                              curve.dangling_edges.end ());
+  for (std::uint32_t v : w.isolated_vertices)
+    if (!apart[v])
+      curve.isolated_vertices.push_back (v);
+  return curve;
+}
+
 } // namespace
 
 DefaultSurface::DefaultSurface (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
@@ -108,6 +143,15 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
                          const InputKey& input_key, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
+  std::vector<std::uint8_t> apart = pointsApart (complex, positions);
+  if (std::optional<Boundary> curve = curveLessPointsApart (complex, x, apart))
+  {
+    // Nearly collinear points with an outlier: a curve, as where X has no triangle (below).
+    Output out;
+    out.w = std::move (*curve);
+    out.apart = offTheSurface (apart, out.w);
+    return out;
+  }
   std::optional<SolidLabels> known;
   const LayerTriangles layer = layerTriangles (complex, x);
   bool single_layer = layer.singleLayer ();
@@ -137,7 +181,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     out.w = openSheet (
         adjacency_, std::move (candidates), positions, [&] { return known ? known->inside : labelsFor (x).inside; },
         viewpoint, noisy);
-    out.apart = offTheSurface (pointsApart (complex, positions), out.w); // the sheet's gaps leave them off
+    out.apart = offTheSurface (apart, out.w); // the sheet's gaps leave them off
     clock.stageDone ("sheet");
     return out;
   }
@@ -166,17 +210,14 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     });
   // A point apart from all others (an outlier) is on no surface the points show, and a closed
   // surface through it would be a spike: its tetrahedra are outside, and the repair leaves it off.
-  if (x.size (3) > 0)
+  if (x.size (3) > 0 && std::find (apart.begin (), apart.end (), 1) != apart.end ())
   {
-    labels.apart = pointsApart (complex, positions);
-    if (std::find (labels.apart.begin (), labels.apart.end (), 1) == labels.apart.end ())
-      labels.apart.clear ();
-    else
-      parallelForEach (labels.inside.size (), [&] (std::size_t t) {
-        for (int i = 0; i < 4; ++i)
-          if (labels.apart[adjacency_.vertex (static_cast<std::uint32_t> (t), i)])
-            labels.inside[t] = 0;
-      });
+    labels.apart = std::move (apart);
+    parallelForEach (labels.inside.size (), [&] (std::size_t t) {
+      for (int i = 0; i < 4; ++i)
+        if (labels.apart[adjacency_.vertex (static_cast<std::uint32_t> (t), i)])
+          labels.inside[t] = 0;
+    });
   }
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
