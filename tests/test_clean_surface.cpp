@@ -341,11 +341,13 @@ TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
 {
   // A closed surface through a point far from all others is a spike to it (or, where the paper's
   // W holds several such points by triangles, sheets across the scene). The default surface
-  // leaves such a point off and says so; every other point stays on it.
+  // leaves such a point off and says so, and three such points close together; every other point
+  // stays on it.
   std::vector<Point3> sphere = sphereSample (3000, 1);
   const std::vector<std::vector<Point3>> outliers = {{{1e3, 0, 0}},
                                                      {{0, 0, 6}},
-                                                     {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}}};
+                                                     {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}},
+                                                     {{5, 0, 0}, {5.05, 0, 0}, {5, 0.05, 0}}};
   for (const std::vector<Point3>& far : outliers)
   {
     std::vector<Point3> points = sphere;

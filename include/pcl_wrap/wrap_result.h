@@ -175,10 +175,10 @@ struct WrapResult
   WrapSurface w;
   std::vector<PointIndex> skipped;   ///< points with a non-finite coordinate or weight
   std::vector<PointIndex> hidden;    ///< points with an empty power cell
-  /** \brief The default surface: points apart from all others (far outliers: each more than 16
-    * median spacings from its nearest neighbour, and most of its Delaunay neighbours more than 16
-    * times nearer theirs), which it leaves off, where a closed surface through them would be a
-    * spike (docs/surface.md, "Points apart"). */
+  /** \brief The default surface: points apart from all others (far outliers, alone or up to three
+    * together: more than 16 median spacings from the rest, and most of their Delaunay neighbours
+    * more than 16 times nearer their own nearest points), which it leaves off, where a closed
+    * surface through them would be a spike (docs/surface.md, "Points apart"). */
   std::vector<PointIndex> apart;
   /** \brief The points copied to split the output where it touches itself (the default surface,
     * or the raw output with WrapParameters::manifold). Point index n + k (n = the number of input points) in
