@@ -289,9 +289,10 @@ public:
 
   /** Brings each point that tents and cones did not reach onto the sheets whatever the Delaunay
     * faces around it (returns how many): the sheet triangle abc at one of its Delaunay neighbours
-    * becomes abv, bcv, cav, or a boundary edge ab there gets the triangle from the point over it,
-    * the smallest such with no edge across a gap. The new triangles need not be Delaunay faces and
-    * have no id (NO_ID); each is tied to its sheet as a hole's filling is. */
+    * becomes abv, bcv, cav, or a boundary edge ab there gets the triangle from the point over it;
+    * of those with no edge across a gap, the one with the fewest new triangles facing against the
+    * triangle they replace or extend, then the smallest. The new triangles need not be Delaunay
+    * faces and have no id (NO_ID); each is tied to its sheet as a hole's filling is. */
   std::size_t pinMissedPoints (const Tetrahedra& tetrahedra);
 
   /** Closes the holes of the sheets smaller than a gap the sampling resolves (where the growth
