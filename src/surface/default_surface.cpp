@@ -42,12 +42,12 @@ verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uin
   return count;
 }
 
-/** The points flagged in \a apart (per vertex, pointsApart()) that \a surface leaves off. */
+/** The points flagged in \a apart (per vertex, or empty: pointsApart()) that \a surface leaves off. */
 std::vector<std::uint32_t>
 offTheSurface (const std::vector<std::uint8_t>& apart, const Boundary& surface)
 {
   std::vector<std::uint32_t> off;
-  if (std::find (apart.begin (), apart.end (), 1) == apart.end ())
+  if (apart.empty ())
     return off;
   std::vector<std::uint8_t> on (apart.size (), 0);
   for (const auto& t : surface.triangles)
@@ -59,14 +59,14 @@ offTheSurface (const std::vector<std::uint8_t>& apart, const Boundary& surface)
   return off;
 }
 
-/** Where X has no tetrahedron and each of its triangles has a point apart (\a apart, per vertex)
+/** Where X has no tetrahedron and each of its triangles has a point apart (\a apart: pointsApart())
   * among its corners, a curve with outliers beside it that X ties by triangles: the curve, the
   * paper's W less its simplices at those points (the triangles' other edges become edges of the
   * curve). Otherwise nothing. */
 std::optional<Boundary>
 curveLessPointsApart (const SimplicialComplex& complex, const Subcomplex& x, const std::vector<std::uint8_t>& apart)
 {
-  if (x.size (3) > 0 || x.size (2) == 0 || std::find (apart.begin (), apart.end (), 1) == apart.end ())
+  if (x.size (3) > 0 || x.size (2) == 0 || apart.empty ())
     return std::nullopt;
   for (SimplexId t = 0; t < complex.size (2); ++t)
   {
@@ -210,7 +210,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     });
   // A point apart from all others (an outlier) is on no surface the points show, and a closed
   // surface through it would be a spike: its tetrahedra are outside, and the repair leaves it off.
-  if (x.size (3) > 0 && std::find (apart.begin (), apart.end (), 1) != apart.end ())
+  if (x.size (3) > 0 && !apart.empty ())
   {
     labels.apart = std::move (apart);
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {

@@ -1206,18 +1206,18 @@ SheetGrowth::pinMissedPoints (const Tetrahedra& tetrahedra)
     else
     {
       // Tied to the sheet across each rim edge; their ids are gone, so edges no longer tie them.
+      std::array<std::uint32_t, 3> rim;
       for (int k = 0; k < 3; ++k)
-        if (const std::uint32_t n = across (best, abc[k], abc[(k + 1) % 3]); n != NONE)
+        if ((rim[k] = across (best, abc[k], abc[(k + 1) % 3])) != NONE)
         {
-          fill_partner_.push_back ({best, n});
-          touched[n] = 1; // its edge with abc is on a triangle the index does not hold
+          fill_partner_.push_back ({best, rim[k]});
+          touched[rim[k]] = 1; // its edge with abc is on a triangle the index does not hold
         }
       triangles_[best] = {abc[0], abc[1], v};
       ids_[best] = NO_ID;
       for (int k = 1; k < 3; ++k)
       {
-        const std::uint32_t n = across (best, abc[k], abc[(k + 1) % 3]);
-        add ({abc[k], abc[(k + 1) % 3], v}, n == NONE ? best : n);
+        add ({abc[k], abc[(k + 1) % 3], v}, rim[k] == NONE ? best : rim[k]);
         fill_partner_.push_back ({static_cast<std::uint32_t> (triangles_.size () - 1), best});
       }
     }

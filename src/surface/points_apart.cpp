@@ -16,9 +16,8 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
 {
   const std::uint32_t n = complex.numVertices ();
   const SimplexId edges = complex.size (1);
-  std::vector<std::uint8_t> apart (n, 0);
   if (n < 5)
-    return apart;
+    return {};
   const auto length = [&] (SimplexId e) {
     return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
   };
@@ -49,7 +48,7 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
         t = std::uint8_t (std::min (t + 1, 255));
       }
   if (std::none_of (ties.begin (), ties.end (), [] (std::uint8_t t) { return t < APART_CLUSTER; }))
-    return apart;
+    return {};
   UnionFind groups (n);
   for (SimplexId e = 0; e < edges; ++e)
   {
@@ -84,9 +83,14 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
         }
       }
     }
+  std::vector<std::uint8_t> apart (n, 0);
+  bool any = false;
   for (std::uint32_t v = 0; v < n; ++v)
+  {
     apart[v] = small (v) && 4 * denser[v] > 3 * outside[v];
-  return apart;
+    any = any || apart[v];
+  }
+  return any ? apart : std::vector<std::uint8_t> ();
 }
 
 } // namespace pcl_wrap::detail

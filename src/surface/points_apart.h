@@ -29,7 +29,7 @@ constexpr std::uint8_t APART_CLUSTER = 3;
   * that the points show passes through it, so the default surface leaves it off, where a closed
   * surface through it would be a spike. A few outliers close together are apart too, where most
   * of their neighbours are points of a much denser sample. Delaunay edges hold every point's
-  * nearest neighbour. All 0 below five points. */
+  * nearest neighbour. Empty where no point is apart (always below five points). */
 std::vector<std::uint8_t>
 pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions);
 
