@@ -337,17 +337,35 @@ TEST (CleanSurface, APointInAFoldIsNotDrawnIntoASpike)
   }
 }
 
+/** \a size points on spheres of radii 0.01 to 0.05 around \a centre: a small cluster, with points
+  * inside the hull of the others. */
+std::vector<Point3>
+cluster (std::size_t size, const Point3& centre)
+{
+  std::vector<Point3> points = sphereSample (size, 7);
+  for (std::size_t i = 0; i < size; ++i)
+  {
+    const double radius = 0.01 + 0.004 * double ((7 * i) % 11);
+    for (int k = 0; k < 3; ++k)
+      points[i][k] = centre[k] + radius * points[i][k];
+  }
+  return points;
+}
+
 TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
 {
   // A closed surface through a point far from all others is a spike to it (or, where the paper's
   // W holds several such points by triangles, sheets across the scene). The default surface
-  // leaves such a point off and says so, and three such points close together; every other point
-  // stays on it.
+  // leaves such a point off and says so, and a cluster of fewer points than an object has, some
+  // inside the others' hull (as an interior point, one the paper's W holds by a sheet to the
+  // sphere); every other point stays on it.
   std::vector<Point3> sphere = sphereSample (3000, 1);
-  const std::vector<std::vector<Point3>> outliers = {{{1e3, 0, 0}},
-                                                     {{0, 0, 6}},
-                                                     {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}},
-                                                     {{5, 0, 0}, {5.05, 0, 0}, {5, 0.05, 0}}};
+  std::vector<std::vector<Point3>> outliers = {{{1e3, 0, 0}},
+                                               {{0, 0, 6}},
+                                               {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}},
+                                               {{5, 0, 0}, {5.05, 0, 0}, {5, 0.05, 0}}};
+  for (std::size_t size : {8, 20})
+    outliers.push_back (cluster (size, {5, 0, 0}));
   for (const std::vector<Point3>& far : outliers)
   {
     std::vector<Point3> points = sphere;
@@ -366,6 +384,11 @@ TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
     EXPECT_EQ (on.size (), sphere.size ()) << "every point of the sphere on it";
     EXPECT_LT (longestEdgeInMedianEdges (points), 4.0);
   }
+  // As many points as an object has are one.
+  std::vector<Point3> points = sphere;
+  const std::vector<Point3> object = cluster (40, {5, 0, 0});
+  points.insert (points.end (), object.begin (), object.end ());
+  EXPECT_TRUE (computeWrap (points).apart.empty ());
 }
 
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)

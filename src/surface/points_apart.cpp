@@ -2,7 +2,9 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "surface/points_apart.h"
 
+#include "surface/solid_join.h"
 #include "util/distance.h"
+#include "util/parallel_for_each.h"
 #include "util/union_find.h"
 
 #include <algorithm>
@@ -10,6 +12,8 @@
 
 namespace pcl_wrap::detail
 {
+
+static_assert (APART_CLUSTER + 1 == FRAGMENT_VERTICES, "a group apart has fewer points than an object");
 
 std::vector<std::uint8_t>
 pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions)
@@ -37,49 +41,43 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
   std::vector<double> ().swap (spacings);
   // Groups of points tied by edges no longer than that, far at the scale of the whole sample (a
   // mesh's vertices, sparse on its flat parts, can be far apart at the scale of some of their
-  // neighbours). A point in a group of at most APART_CLUSTER has at most that many less one such
-  // edges: where none has, as in every sample of a surface, there is nothing more to look at.
-  std::vector<std::uint8_t> ties (n, 0);
-  for (SimplexId e = 0; e < edges; ++e)
-    if (length (e) <= far)
-      for (int k = 0; k < 2; ++k)
-      {
-        std::uint8_t& t = ties[complex.vertex (1, e, k)];
-        t = std::uint8_t (std::min (t + 1, 255));
-      }
-  if (std::none_of (ties.begin (), ties.end (), [] (std::uint8_t t) { return t < APART_CLUSTER; }))
-    return {};
-  UnionFind groups (n);
-  for (SimplexId e = 0; e < edges; ++e)
-  {
-    const std::uint32_t a = groups.find (complex.vertex (1, e, 0)), b = groups.find (complex.vertex (1, e, 1));
-    if (a != b && length (e) <= far)
-      groups.attach (a, b);
-  }
+  // neighbours), found on all threads. Every sample of a surface is one group, or a few large ones.
+  UnionFind groups;
+  groups.resetInParallel (n);
+  parallelForEach (edges, [&] (std::size_t e) {
+    if (length (SimplexId (e)) <= far)
+      groups.uniteConcurrently (complex.vertex (1, SimplexId (e), 0), complex.vertex (1, SimplexId (e), 1));
+  });
+  std::vector<std::uint32_t> group (n);
+  parallelForEach (n, [&] (std::size_t v) { group[v] = groups.findConcurrently (static_cast<std::uint32_t> (v)); });
   std::vector<std::uint32_t> size (n, 0);
-  for (std::uint32_t v = 0; v < n; ++v)
-    ++size[groups.find (v)];
-  const auto small = [&] (std::uint32_t v) { return size[groups.find (v)] <= APART_CLUSTER; };
-  // Per point of a small group: its distance to the nearest point outside, its Delaunay neighbours
-  // outside, and those of them more than APART_SPACINGS times nearer their own nearest point.
+  for (std::uint32_t g : group)
+    ++size[g];
+  if (std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
+    return {};
+  // Per small group: its distance to the nearest point outside, its Delaunay neighbours outside
+  // (counted once per edge) and those of them more than APART_SPACINGS times nearer their own
+  // nearest point. A point inside the group's hull may have no neighbour outside: the group is
+  // apart or not as a whole.
   std::vector<double> out (n, std::numeric_limits<double>::infinity ());
   std::vector<std::uint32_t> outside (n, 0), denser (n, 0);
   for (int pass = 0; pass < 2; ++pass)
     for (SimplexId e = 0; e < edges; ++e)
     {
       const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
-      if (groups.find (a) == groups.find (b))
+      const std::uint32_t group_a = group[a], group_b = group[b];
+      if (group_a == group_b)
         continue;
-      for (const auto& [v, w] : {std::pair (a, b), std::pair (b, a)})
+      for (const auto& [g, w] : {std::pair (group_a, b), std::pair (group_b, a)})
       {
-        if (!small (v))
+        if (size[g] > APART_CLUSTER)
           continue;
         if (pass == 0)
-          out[v] = std::min (out[v], length (e));
+          out[g] = std::min (out[g], length (e));
         else
         {
-          ++outside[v];
-          denser[v] += APART_SPACINGS * nearest[w] < out[v];
+          ++outside[g];
+          denser[g] += APART_SPACINGS * nearest[w] < out[g];
         }
       }
     }
@@ -87,7 +85,8 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
   bool any = false;
   for (std::uint32_t v = 0; v < n; ++v)
   {
-    apart[v] = small (v) && 4 * denser[v] > 3 * outside[v];
+    const std::uint32_t g = group[v];
+    apart[v] = size[g] <= APART_CLUSTER && 4 * denser[g] > 3 * outside[g];
     any = any || apart[v];
   }
   return any ? apart : std::vector<std::uint8_t> ();

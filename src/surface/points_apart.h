@@ -13,23 +13,26 @@ namespace pcl_wrap::detail
 {
 
 /** \brief A point is apart from the others (an outlier) when it is more than this many median
-  * spacings of the sample from every point but at most APART_CLUSTER - 1 others, and more than
-  * this many times farther from the nearest of the rest than three quarters of its Delaunay
-  * neighbours among them are from their own nearest points. An outlier beside a sampled surface
-  * has nearly all its Delaunay neighbours on that surface; the vertices of a mesh, sparse on its
-  * flat parts, are at most about ten median spacings apart, with half their neighbours as sparse,
-  * and a part of a sample much sparser than the rest has neighbours as sparse. */
+  * spacings of the sample from every point but at most APART_CLUSTER - 1 others (its group), and
+  * the group's nearest point outside is more than this many times farther from it than three
+  * quarters of the group's Delaunay neighbours outside are from their own nearest points. An
+  * outlier beside a sampled surface has nearly all its Delaunay neighbours on that surface; the
+  * vertices of a mesh, sparse on its flat parts, are at most about ten median spacings apart,
+  * with half their neighbours as sparse, and a part of a sample much sparser than the rest has
+  * neighbours as sparse. */
 constexpr double APART_SPACINGS = 16.0;
 
-/** \brief Up to this many outliers close together are apart: three points bound no solid, so a
-  * closed surface through them is a web or a spike; four can be a small object of their own. */
-constexpr std::uint8_t APART_CLUSTER = 3;
+/** \brief Up to this many outliers close together are apart: fewer points than FRAGMENT_VERTICES
+  * (solid_join.h) show no object of their own, and a closed surface through them, tied to the
+  * rest, is a spike. */
+constexpr std::uint8_t APART_CLUSTER = 31;
 
 /** \brief Per vertex of Del S, 1 for a point apart from all others (APART_SPACINGS): no surface
   * that the points show passes through it, so the default surface leaves it off, where a closed
-  * surface through it would be a spike. A few outliers close together are apart too, where most
-  * of their neighbours are points of a much denser sample. Delaunay edges hold every point's
-  * nearest neighbour. Empty where no point is apart (always below five points). */
+  * surface through it would be a spike. A few outliers close together are apart too, as a group,
+  * where most of the group's neighbours are points of a much denser sample (a point inside the
+  * group's hull may have no neighbour outside it). Delaunay edges hold every point's nearest
+  * neighbour. Empty where no point is apart (always below five points). */
 std::vector<std::uint8_t>
 pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions);
 
