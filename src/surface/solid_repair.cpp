@@ -444,14 +444,21 @@ private:
     return spacings;
   }
 
-  /** spacingAround() at vertex \a v, with the spacings at vertices kept from call to call.
-    * \a star is scratch. */
+  /** spacingAround() at vertex \a v, kept from call to call (the patches overlap), as are the
+    * spacings at vertices it reads. \a star is scratch. */
   double sampleSpacingAround (std::uint32_t v, Star& star)
   {
     if (spacing_at_.empty ())
+    {
       spacing_at_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
-    tetrahedra_.gatherStar (v, star);
-    return spacingAround (tetrahedra_, star, v, positions_, spacing_at_, neighbour_star_);
+      spacing_around_.assign (complex_.numVertices (), std::numeric_limits<double>::quiet_NaN ());
+    }
+    if (std::isnan (spacing_around_[v]))
+    {
+      tetrahedra_.gatherStar (v, star);
+      spacing_around_[v] = spacingAround (tetrahedra_, star, v, positions_, spacing_at_, neighbour_star_);
+    }
+    return spacing_around_[v];
   }
 
   /** The tetrahedra whose four vertices are all in [\a first, \a last) (ascending vertex ids),
@@ -636,15 +643,25 @@ private:
       }
     // One search from each seed that no earlier search reached. What is left of the side is
     // connected when one search reached all of it (and the hull, if the part touched it), or
-    // when every search reached the hull, beyond which the outside is one.
+    // when every search reached the hull, beyond which the outside is one. For the solid, that
+    // is all the first search has to find: it stops once it has reached every seed.
     std::size_t searches = 0, to_hull = 0, small = 0;
-    std::vector<std::uint32_t> move = part, queue;
+    std::vector<std::uint32_t> move = part, queue, distinct_seeds;
+    if (side)
+    {
+      distinct_seeds = seeds;
+      std::sort (distinct_seeds.begin (), distinct_seeds.end ());
+      distinct_seeds.erase (std::unique (distinct_seeds.begin (), distinct_seeds.end ()), distinct_seeds.end ());
+    }
+    std::size_t seeds_left = distinct_seeds.size (); // of the solid, not reached by the first search
     for (std::uint32_t seed : seeds)
     {
       if (reached[seed] == search)
         continue;
       queue.assign (1, seed);
       reached[seed] = search;
+      const bool first = searches == 0;
+      seeds_left -= side && first;
       bool hull_reached = false;
       const auto reach = [&] (std::uint32_t t) {
         for (int i = 0; i < 4; ++i)
@@ -656,11 +673,12 @@ private:
           {
             reached[u] = search;
             queue.push_back (u);
+            seeds_left -= side && first && std::binary_search (distinct_seeds.begin (), distinct_seeds.end (), u);
           }
         }
       };
       std::size_t k = 0;
-      for (; k < queue.size () && queue.size () <= HANDLE_REACH; ++k)
+      for (; k < queue.size () && queue.size () <= HANDLE_REACH && !(side && first && seeds_left == 0); ++k)
         reach (queue[k]);
       if (!side && !hull_reached && k < queue.size ())
       {
@@ -1182,6 +1200,7 @@ private:
   std::vector<std::uint8_t> unmended_; // per vertex: left pinched when last looked at
   std::vector<std::uint32_t> hull_hops_;         // hullHops(), for one search for handles
   std::vector<double> spacing_at_;               // per vertex: spacingAt(), NaN until a gap check needs it
+  std::vector<double> spacing_around_;           // per vertex: spacingAround(), NaN until needed
   Star neighbour_star_;                          // spacingAround()'s scratch
   std::optional<SolidEulerChange> euler_change_; // from the first mending on
 };
