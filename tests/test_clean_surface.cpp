@@ -384,11 +384,17 @@ TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
     EXPECT_EQ (on.size (), sphere.size ()) << "every point of the sphere on it";
     EXPECT_LT (longestEdgeInMedianEdges (points), 4.0);
   }
-  // As many points as an object has are one.
+  // As many points as an object has are one; so are small clusters with no object beside them.
   std::vector<Point3> points = sphere;
   const std::vector<Point3> object = cluster (40, {5, 0, 0});
   points.insert (points.end (), object.begin (), object.end ());
   EXPECT_TRUE (computeWrap (points).apart.empty ());
+  std::vector<Point3> clusters = cluster (20, {0, 0, 0});
+  const std::vector<Point3> other = cluster (20, {5, 0, 0});
+  clusters.insert (clusters.end (), other.begin (), other.end ());
+  const WrapResult two = computeWrap (clusters);
+  EXPECT_TRUE (two.apart.empty ());
+  EXPECT_EQ (describeSurface (trianglesOf (two)).components, 2u);
 }
 
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)

@@ -56,9 +56,11 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
   if (std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
     return {};
   // Per small group: its distance to the nearest point outside, its Delaunay neighbours outside
-  // (counted once per edge) and those of them more than APART_SPACINGS times nearer their own
-  // nearest point. A point inside the group's hull may have no neighbour outside: the group is
-  // apart or not as a whole.
+  // (counted once per edge) and those of them that are points of an object (a group larger than
+  // APART_CLUSTER) more than APART_SPACINGS times nearer their own nearest point. A point inside
+  // the group's hull may have no neighbour outside: the group is apart or not as a whole. Small
+  // groups with no object beside them (a few blobs of points, all far apart) are what the points
+  // show, and none is apart.
   std::vector<double> out (n, std::numeric_limits<double>::infinity ());
   std::vector<std::uint32_t> outside (n, 0), denser (n, 0);
   for (int pass = 0; pass < 2; ++pass)
@@ -77,7 +79,7 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
         else
         {
           ++outside[g];
-          denser[g] += APART_SPACINGS * nearest[w] < out[g];
+          denser[g] += size[group[w]] > APART_CLUSTER && APART_SPACINGS * nearest[w] < out[g];
         }
       }
     }
