@@ -290,8 +290,8 @@ TEST_F (Cli, MalformedInputGivesOneErrorLineAndNoOutput)
 
 TEST_F (Cli, UnwritableOutputGivesOneErrorLine)
 {
-  writeText (DIR + "four.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
-  const CliRun run = runCli (DIR + "four.xyz " + DIR + "no/such/dir/out.ply");
+  writeText (DIR + "unwritable.xyz", "1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n");
+  const CliRun run = runCli (DIR + "unwritable.xyz " + DIR + "no/such/dir/out.ply");
   EXPECT_EQ (run.status, 1);
   EXPECT_EQ (std::count (run.err.begin (), run.err.end (), '\n'), 1) << run.err;
   EXPECT_NE (run.err.find ("out.ply"), std::string::npos);
@@ -446,10 +446,10 @@ TEST_F (Cli, SheetFacesTheViewpointGivenOrThePcdFilesOwn)
     }
     return z;
   };
-  writeText (DIR + "terrain.xyz", xyzText (terrain));
-  ASSERT_EQ (runCli (DIR + "terrain.xyz " + DIR + "up.ply").status, 0);
+  writeText (DIR + "facing_terrain.xyz", xyzText (terrain));
+  ASSERT_EQ (runCli (DIR + "facing_terrain.xyz " + DIR + "up.ply").status, 0);
   EXPECT_GT (up (DIR + "up.ply"), 0) << "no viewpoint: up";
-  ASSERT_EQ (runCli (DIR + "terrain.xyz " + DIR + "below.ply --viewpoint 0,0,-5").status, 0);
+  ASSERT_EQ (runCli (DIR + "facing_terrain.xyz " + DIR + "below.ply --viewpoint 0,0,-5").status, 0);
   EXPECT_LT (up (DIR + "below.ply"), 0) << "towards a viewpoint below";
 
   pcl::PointCloud<pcl::PointXYZ> cloud;
@@ -462,7 +462,7 @@ TEST_F (Cli, SheetFacesTheViewpointGivenOrThePcdFilesOwn)
   ASSERT_EQ (runCli (DIR + "terrain.pcd " + DIR + "given.ply --viewpoint 0,0,5").status, 0);
   EXPECT_GT (up (DIR + "given.ply"), 0) << "--viewpoint before the file's";
   for (const char* bad : {"0,0", "0,0,0,0", "0,x,1", "0,0,inf", "1:2:3"})
-    EXPECT_EQ (runCli (DIR + "terrain.xyz " + DIR + "bad.ply --viewpoint " + bad).status, 2) << bad;
+    EXPECT_EQ (runCli (DIR + "facing_terrain.xyz " + DIR + "bad.ply --viewpoint " + bad).status, 2) << bad;
 }
 
 /** A sphere's points with a colour, a normal and a curvature each, in every point format. */
