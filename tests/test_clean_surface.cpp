@@ -397,6 +397,24 @@ TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
   EXPECT_EQ (describeSurface (trianglesOf (two)).components, 2u);
 }
 
+TEST (CleanSurface, ABlobOfPointsBesideAnObjectIsAPieceOfItsOwn)
+{
+  // A blob of a few dozen points far from a sphere samples a volume no vote encloses: the labelled
+  // solid leaves its points off, and the output fell back to the paper's W, with a sheet from the
+  // blob to the sphere. The blob's solid is X's tetrahedra, and it comes out as a piece of its own.
+  const std::vector<Point3> sphere = sphereSample (3000, 1);
+  for (std::size_t size : {32, 60})
+  {
+    SCOPED_TRACE (std::to_string (size) + " points");
+    std::vector<Point3> points = sphere;
+    const std::vector<Point3> blob = cluster (size, {5, 0, 0});
+    points.insert (points.end (), blob.begin (), blob.end ());
+    expectCleanSurface (points, 2, 0);
+    EXPECT_FALSE (computeWrap (points).statistics.surface_is_w);
+    EXPECT_LT (longestEdgeInMedianEdges (points), 4.0);
+  }
+}
+
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
 {
   const auto points = load ("kitten.xyz");

@@ -9,9 +9,9 @@
 #include "surface/solid_points_of_w.h"
 #include "surface/solid_repair.h"
 #include "util/parallel_for_each.h"
+#include "util/portable.h"
 
 #include <algorithm>
-#include <atomic>
 #include <memory>
 #include <utility>
 
@@ -20,12 +20,12 @@ namespace pcl_wrap::detail
 namespace
 {
 
-/** The number of vertices on the surface of the tetrahedra flagged in \a inside, on all threads. */
-std::size_t
-verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
+/** Per vertex, 1 where it is on the surface of the tetrahedra flagged in \a inside; found on all
+  * threads. */
+std::vector<std::uint8_t>
+onSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
 {
-  const std::size_t n = tetrahedra.complex ().numVertices ();
-  std::unique_ptr<std::atomic<std::uint8_t>[]> on (new std::atomic<std::uint8_t>[n]());
+  std::vector<std::uint8_t> on (tetrahedra.complex ().numVertices (), 0);
   parallelForEach (inside.size (), [&] (std::size_t t) {
     const auto id = static_cast<std::uint32_t> (t);
     for (int i = 0; inside[t] && i < 4; ++i)
@@ -33,13 +33,32 @@ verticesOnSolidSurface (const Tetrahedra& tetrahedra, const std::vector<std::uin
       const std::uint32_t u = tetrahedra.neighbour (id, i);
       if (u == OUTSIDE_HULL || !inside[u])
         for (int j = 1; j < 4; ++j)
-          on[tetrahedra.vertex (id, (i + j) & 3)].store (1, std::memory_order_relaxed);
+          relaxedStore (&on[tetrahedra.vertex (id, (i + j) & 3)], std::uint8_t (1));
     }
   });
-  std::size_t count = 0;
-  for (std::size_t v = 0; v < n; ++v)
-    count += on[v].load (std::memory_order_relaxed);
-  return count;
+  return on;
+}
+
+/** Puts X's tetrahedra inside, and the others outside, within each group of more than
+  * APART_CLUSTER points (\a groups) whose points are less than half on the surface of the
+  * tetrahedra flagged in \a inside (\a on_surface: onSolidSurface()). */
+void
+takeXInGroupsLeftOff (const Tetrahedra& tetrahedra, const Subcomplex& x, const SampleGroups& groups,
+                      const std::vector<std::uint8_t>& on_surface, std::vector<std::uint8_t>& inside)
+{
+  const std::vector<std::uint32_t>& group = groups.group;
+  std::vector<std::uint32_t> on (group.size (), 0);
+  for (std::uint32_t v = 0; v < group.size (); ++v)
+    on[group[v]] += on_surface[v];
+  const auto left_off = [&] (std::uint32_t g) { return groups.size[g] > APART_CLUSTER && 2 * on[g] < groups.size[g]; };
+  if (std::none_of (group.begin (), group.end (), [&] (std::uint32_t g) { return left_off (g); }))
+    return;
+  parallelForEach (inside.size (), [&] (std::size_t t) {
+    const std::uint32_t* v = tetrahedra.vertices (static_cast<std::uint32_t> (t));
+    const std::uint32_t g = group[v[0]];
+    if (group[v[1]] == g && group[v[2]] == g && group[v[3]] == g && left_off (g))
+      inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
+  });
 }
 
 /** The points flagged in \a apart (per vertex, or empty: pointsApart()) that \a surface leaves off. */
@@ -143,7 +162,8 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
                          const InputKey& input_key, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
-  std::vector<std::uint8_t> apart = pointsApart (complex, positions);
+  const SampleGroups groups = sampleGroups (complex, positions);
+  std::vector<std::uint8_t> apart = pointsApart (complex, positions, groups);
   if (std::optional<Boundary> curve = curveLessPointsApart (complex, x, apart))
   {
     // Nearly collinear points with an outlier: a curve, as where X has no triangle (below).
@@ -202,12 +222,22 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   // scattered points), the labels' solid is the convex hull, with points inside it. Either way the
   // solid is X, whose boundary is the volume's outer surface (the paper's W), and the points
   // inside stay inside.
-  const bool volume = !single_layer && x.size (3) > 0 &&
-                      (labels.hull || 2 * verticesOnSolidSurface (adjacency_, labels.inside) < complex.numVertices ());
+  const bool solid_may_be_x = !single_layer && x.size (3) > 0;
+  std::vector<std::uint8_t> on_surface;
+  if (solid_may_be_x && !labels.hull)
+    on_surface = onSolidSurface (adjacency_, labels.inside);
+  const bool volume =
+      solid_may_be_x && (labels.hull || 2 * std::size_t (std::count (on_surface.begin (), on_surface.end (), 1)) <
+                                            complex.numVertices ());
   if (volume)
     parallelForEach (labels.inside.size (), [&] (std::size_t t) {
       labels.inside[t] = x.contains ({3, static_cast<SimplexId> (t)});
     });
+  // So is a group of points far from the rest whose points the labels leave mostly off the
+  // surface: a blob of points (a volume, no vote encloses anything there) beside an object. The
+  // repair brings them on.
+  else if (solid_may_be_x && groups.count > 1)
+    takeXInGroupsLeftOff (adjacency_, x, groups, on_surface, labels.inside);
   // A point apart from all others (an outlier) is on no surface the points show, and a closed
   // surface through it would be a spike: its tetrahedra are outside, and the repair leaves it off.
   if (x.size (3) > 0 && !apart.empty ())

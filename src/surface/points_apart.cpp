@@ -15,46 +15,61 @@ namespace pcl_wrap::detail
 
 static_assert (APART_CLUSTER + 1 == FRAGMENT_VERTICES, "a group apart has fewer points than an object");
 
-std::vector<std::uint8_t>
-pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions)
+SampleGroups
+sampleGroups (const SimplicialComplex& complex, const std::vector<Point3>& positions)
 {
+  SampleGroups out;
   const std::uint32_t n = complex.numVertices ();
   const SimplexId edges = complex.size (1);
   if (n < 5)
-    return {};
+    return out;
   const auto length = [&] (SimplexId e) {
     return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
   };
   // Each point's nearest neighbour, one of its Delaunay neighbours; the sample's median spacing.
-  std::vector<double> nearest (n, std::numeric_limits<double>::infinity ());
+  out.nearest.assign (n, std::numeric_limits<double>::infinity ());
   for (SimplexId e = 0; e < edges; ++e)
   {
     const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
     const double d = length (e);
-    nearest[a] = std::min (nearest[a], d);
-    nearest[b] = std::min (nearest[b], d);
+    out.nearest[a] = std::min (out.nearest[a], d);
+    out.nearest[b] = std::min (out.nearest[b], d);
   }
-  std::vector<double> spacings (nearest);
+  std::vector<double> spacings (out.nearest);
   const auto middle = spacings.begin () + std::ptrdiff_t (n / 2);
   std::nth_element (spacings.begin (), middle, spacings.end ());
   const double far = APART_SPACINGS * *middle;
   std::vector<double> ().swap (spacings);
-  // Groups of points tied by edges no longer than that, far at the scale of the whole sample (a
-  // mesh's vertices, sparse on its flat parts, can be far apart at the scale of some of their
-  // neighbours), found on all threads. Every sample of a surface is one group, or a few large ones.
+  // Far at the scale of the whole sample: a mesh's vertices, sparse on its flat parts, can be far
+  // apart at the scale of some of their neighbours. Found on all threads.
   UnionFind groups;
   groups.resetInParallel (n);
   parallelForEach (edges, [&] (std::size_t e) {
     if (length (SimplexId (e)) <= far)
       groups.uniteConcurrently (complex.vertex (1, SimplexId (e), 0), complex.vertex (1, SimplexId (e), 1));
   });
-  std::vector<std::uint32_t> group (n);
-  parallelForEach (n, [&] (std::size_t v) { group[v] = groups.findConcurrently (static_cast<std::uint32_t> (v)); });
-  std::vector<std::uint32_t> size (n, 0);
-  for (std::uint32_t g : group)
-    ++size[g];
-  if (std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
+  out.group.resize (n);
+  parallelForEach (n, [&] (std::size_t v) { out.group[v] = groups.findConcurrently (static_cast<std::uint32_t> (v)); });
+  out.size.assign (n, 0);
+  for (std::uint32_t g : out.group)
+    out.count += out.size[g]++ == 0;
+  return out;
+}
+
+std::vector<std::uint8_t>
+pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions, const SampleGroups& groups)
+{
+  const std::uint32_t n = complex.numVertices ();
+  const SimplexId edges = complex.size (1);
+  const std::vector<std::uint32_t>& group = groups.group;
+  const std::vector<std::uint32_t>& size = groups.size;
+  const std::vector<double>& nearest = groups.nearest;
+  if (group.empty () ||
+      std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
     return {};
+  const auto length = [&] (SimplexId e) {
+    return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
+  };
   // Per small group: its distance to the nearest point outside, its Delaunay neighbours outside
   // (counted once per edge) and those of them that are points of an object (a group larger than
   // APART_CLUSTER) more than APART_SPACINGS times nearer their own nearest point. A point inside

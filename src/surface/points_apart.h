@@ -28,13 +28,30 @@ constexpr double APART_SPACINGS = 16.0;
   * rest, is a spike. */
 constexpr std::uint8_t APART_CLUSTER = 31;
 
+/** \brief The points of a sample in groups, tied by Delaunay edges no longer than APART_SPACINGS
+  * median spacings of the sample: every sample of one surface is one group; separate objects, far
+  * apart at the scale of the whole sample, and outliers are groups of their own. */
+struct SampleGroups
+{
+  std::vector<std::uint32_t> group; ///< per vertex: its group, named by one of its vertices
+  std::vector<std::uint32_t> size;  ///< per vertex: the points of the group it names (0: none)
+  std::vector<double> nearest;      ///< per vertex: the distance to its nearest neighbour
+  std::size_t count = 0;            ///< the number of groups
+};
+
+/** \brief The groups of the points of Del S (empty below five points). Delaunay edges hold every
+  * point's nearest neighbour. */
+SampleGroups
+sampleGroups (const SimplicialComplex& complex, const std::vector<Point3>& positions);
+
 /** \brief Per vertex of Del S, 1 for a point apart from all others (APART_SPACINGS): no surface
   * that the points show passes through it, so the default surface leaves it off, where a closed
   * surface through it would be a spike. A few outliers close together are apart too, as a group,
   * where most of the group's neighbours are points of a much denser sample (a point inside the
-  * group's hull may have no neighbour outside it). Delaunay edges hold every point's nearest
-  * neighbour. Empty where no point is apart (always below five points). */
+  * group's hull may have no neighbour outside it). Empty where no point is apart (always below
+  * five points).
+  * \param[in] groups sampleGroups() */
 std::vector<std::uint8_t>
-pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions);
+pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positions, const SampleGroups& groups);
 
 } // namespace pcl_wrap::detail
