@@ -249,6 +249,8 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
           labels.inside[t] = 0;
     });
   }
+  if (groups.count > 1)
+    labels.group = groups.group;
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
   // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's

@@ -28,6 +28,15 @@ struct SolidLabels
   std::vector<std::uint8_t> apart;
 
   bool isApart (std::uint32_t v) const { return !apart.empty () && apart[v]; }
+  /** Per vertex: its group of the sample (SampleGroups::group), where there is more than one;
+    * else empty. */
+  std::vector<std::uint32_t> group;
+  /** Are the four vertices \a v of a tetrahedron in one group of the sample? One across the gap
+    * between two groups ties separate objects, or a blob to an object: a spike. */
+  bool oneGroup (const std::uint32_t* v) const
+  {
+    return group.empty () || (group[v[0]] == group[v[1]] && group[v[0]] == group[v[2]] && group[v[0]] == group[v[3]]);
+  }
 };
 
 /** \brief Labels the Delaunay tetrahedra inside or outside the sampled solid.

@@ -101,14 +101,17 @@ onATriangleOfW (const Tetrahedra& tetrahedra, const Subcomplex& x, std::uint32_t
 /** The tetrahedron of \a v's star (all on one side) whose facet opposite \a v is on the surface
   * and whose longest edge is shortest, or OUTSIDE_HULL. */
 std::uint32_t
-bestMove (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const std::vector<std::uint8_t>& inside,
+bestMove (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const SolidLabels& labels,
           std::uint32_t v, Star& star)
 {
+  const std::vector<std::uint8_t>& inside = labels.inside;
   tetrahedra.gatherStar (v, star);
   std::uint32_t best = OUTSIDE_HULL;
   double shortest = 0;
   for (std::uint32_t t : star.tetrahedra ())
   {
+    if (!labels.oneGroup (tetrahedra.vertices (t)))
+      continue; // across the gap between two groups of the sample
     const std::uint32_t u = tetrahedra.neighbour (t, tetrahedra.localIndex (t, v));
     // The facet opposite v is on the surface: across it, the other side (or the hull, outside).
     const bool across_inside = u != OUTSIDE_HULL && inside[u];
@@ -143,7 +146,7 @@ bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::
     {
       if (tetrahedra.tetrahedronOf (v) == NO_TETRAHEDRON || labels.isApart (v))
         continue;
-      const std::uint32_t t = bestMove (tetrahedra, positions, labels.inside, v, star);
+      const std::uint32_t t = bestMove (tetrahedra, positions, labels, v, star);
       if (t == OUTSIDE_HULL)
         off[kept++] = v;
       else

@@ -30,8 +30,9 @@ struct PointsOfWBrought
   * opposite the point is on the surface changes side: the surface then runs over the point by
   * the tetrahedron's three other facets, and stays a closed 2-manifold wherever it was one (the
   * three are new to it, and so is the point), with its pieces and genus. Of several such
-  * tetrahedra, the one whose longest edge is shortest moves; a point none reaches stays off, and
-  * so does a point apart from all others (SolidLabels::apart).
+  * tetrahedra, the one whose longest edge is shortest moves, of those within one group of the
+  * sample (SolidLabels::group: one across the gap between two groups would be a spike); a point
+  * none reaches stays off, and so does a point apart from all others (SolidLabels::apart).
   * \param[in] positions per vertex */
 PointsOfWBrought
 bringPointsOfWOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const std::vector<Point3>& positions,

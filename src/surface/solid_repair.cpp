@@ -1150,7 +1150,7 @@ private:
       std::vector<std::pair<std::uint32_t, double>> touching; // (tetrahedron, its longest edge)
       double shortest = std::numeric_limits<double>::infinity ();
       for (std::uint32_t t : s.star.tetrahedra ())
-        if (!flipped_[t] && touches (t))
+        if (!flipped_[t] && touches (t) && labels_.oneGroup (tetrahedra_.vertices (t)))
         {
           touching.emplace_back (t, longestEdge (tetrahedra_, positions_, t));
           shortest = std::min (shortest, touching.back ().second);
