@@ -434,6 +434,25 @@ TEST (CleanSurface, ABlobOfPointsBesideAnObjectIsAPieceOfItsOwn)
     }
 }
 
+TEST (CleanSurface, AnOutlierBesideAVolumeIsReportedWhateverTheOutput)
+{
+  // Gaussian points with an outlier far away: a volume, whose labelled solid can leave more of W's
+  // points off than W, so that the output is W, split (these blobs, drawn from these seeds, do).
+  // W holds the outlier by an edge alone, which the split surface leaves off: it is reported
+  // apart, as it is beside the solid's surface.
+  std::size_t took_w = 0;
+  for (const auto& [size, seed] : {std::pair{58u, 38u}, {144u, 124u}, {304u, 284u}, {200u, 1u}})
+  {
+    SCOPED_TRACE (seed);
+    std::vector<Point3> points = gaussianBlob (size, {0, 0, 0}, 1.0, seed);
+    points.push_back ({100, 100, 100});
+    const WrapResult r = computeWrap (points);
+    took_w += r.statistics.surface_is_w;
+    EXPECT_EQ (r.apart, std::vector<PointIndex>{size});
+  }
+  EXPECT_EQ (took_w, 3u);
+}
+
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
 {
   const auto points = load ("kitten.xyz");

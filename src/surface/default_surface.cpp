@@ -272,6 +272,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
     Output out;
     out.w = extractBoundary (complex, x, true, input_key);
     out.split = splitPinches (complex, x, out.w);
+    out.apart = offTheSurface (labels.apart, out.w); // W holds a far outlier by an edge alone
     return out;
   }
 
