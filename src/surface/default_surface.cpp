@@ -249,6 +249,8 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
           labels.inside[t] = 0;
     });
   }
+  // The moves that bring a point on stay within its group: a tetrahedron across the gap between
+  // two groups would be a spike.
   if (groups.count > 1)
     labels.group = groups.group;
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);

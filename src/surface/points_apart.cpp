@@ -40,8 +40,9 @@ sampleGroups (const SimplicialComplex& complex, const std::vector<Point3>& posit
   std::nth_element (spacings.begin (), middle, spacings.end ());
   const double far = APART_SPACINGS * *middle;
   std::vector<double> ().swap (spacings);
-  // Far at the scale of the whole sample: a mesh's vertices, sparse on its flat parts, can be far
-  // apart at the scale of some of their neighbours. Found on all threads.
+  // The groups: tied by edges no longer than that, far at the scale of the whole sample (a mesh's
+  // vertices, sparse on its flat parts, can be far apart at the scale of some of their
+  // neighbours). Found on all threads.
   UnionFind groups;
   groups.resetInParallel (n);
   parallelForEach (edges, [&] (std::size_t e) {
