@@ -18,6 +18,9 @@ import tempfile
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import single_layers  # noqa: E402
+
 SIZES = (1, 3, 8, 20, 31, 32, 60, 100, 200, 400)
 SPHERE = 3000
 
@@ -31,14 +34,7 @@ def cloud(size, sigma, seed):
 
 def pieces_and_longest(mesh):
     """The connected pieces of the mesh's triangles and its longest edge."""
-    vertices, triangles = [], []
-    with open(mesh) as f:
-        for line in f:
-            if line.startswith("v "):
-                vertices.append([float(t) for t in line.split()[1:4]])
-            elif line.startswith("f "):
-                triangles.append([int(t.split("/")[0]) - 1 for t in line.split()[1:4]])
-    v, t = np.array(vertices), np.array(triangles, dtype=np.int64).reshape(-1, 3)
+    v, t = single_layers.read_obj(mesh)
     parent = list(range(len(v)))
 
     def find(a):

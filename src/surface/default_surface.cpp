@@ -162,7 +162,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
                          const InputKey& input_key, WrapStatistics& stats, StageClock& clock)
 {
   const SimplicialComplex& complex = adjacency_.complex ();
-  const SampleGroups groups = sampleGroups (complex, positions);
+  SampleGroups groups = sampleGroups (complex, positions);
   std::vector<std::uint8_t> apart = pointsApart (complex, positions, groups);
   if (std::optional<Boundary> curve = curveLessPointsApart (complex, x, apart))
   {
@@ -252,7 +252,7 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   // The moves that bring a point on stay within its group: a tetrahedron across the gap between
   // two groups would be a spike.
   if (groups.count > 1)
-    labels.group = groups.group;
+    labels.group = std::move (groups.group);
   SolidRepair repair = repairSolid (adjacency_, x, positions, labels, volume);
   stats.tetrahedra_moved = repair.flipped;
   // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's

@@ -15,6 +15,17 @@ namespace pcl_wrap::detail
 
 static_assert (APART_CLUSTER + 1 == FRAGMENT_VERTICES, "a group apart has fewer points than an object");
 
+namespace
+{
+
+double
+edgeLength (const SimplicialComplex& complex, const std::vector<Point3>& positions, SimplexId e)
+{
+  return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
+}
+
+} // namespace
+
 SampleGroups
 sampleGroups (const SimplicialComplex& complex, const std::vector<Point3>& positions)
 {
@@ -23,9 +34,7 @@ sampleGroups (const SimplicialComplex& complex, const std::vector<Point3>& posit
   const SimplexId edges = complex.size (1);
   if (n < 5)
     return out;
-  const auto length = [&] (SimplexId e) {
-    return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
-  };
+  const auto length = [&] (SimplexId e) { return edgeLength (complex, positions, e); };
   // Each point's nearest neighbour, one of its Delaunay neighbours; the sample's median spacing.
   out.nearest.assign (n, std::numeric_limits<double>::infinity ());
   for (SimplexId e = 0; e < edges; ++e)
@@ -68,9 +77,7 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
   if (group.empty () ||
       std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
     return {};
-  const auto length = [&] (SimplexId e) {
-    return distance (positions[complex.vertex (1, e, 0)], positions[complex.vertex (1, e, 1)]);
-  };
+  const auto length = [&] (SimplexId e) { return edgeLength (complex, positions, e); };
   // Per small group: its distance to the nearest point outside, its Delaunay neighbours outside
   // (counted once per edge) and those of them that are points of an object (a group larger than
   // APART_CLUSTER) more than APART_SPACINGS times nearer their own nearest point. A point inside
