@@ -194,6 +194,20 @@ TEST (CleanSurface, CoarseObjectsStayWholeAndApart)
                       2, 2);
 }
 
+TEST (CleanSurface, ACoarseThinRingIsNotCutAsASmallHandle)
+{
+  // 350 points on a ring of tube radius 0.12: about seven vertices round the tube. A patch of
+  // three rings round it is a band whose two rims can meet at a vertex; counted once there, the
+  // band would have a genus of its own, and the repair would cut the ring's tube as a small
+  // handle's (seeds 1 and 14). (At 300 points the labelling itself cuts some rings, where the
+  // sample leaves the tube sparser.)
+  for (unsigned seed = 1; seed <= 30; ++seed)
+  {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    expectCleanSurface (torusSample (350, seed, 1.0, 0.12), 1, 1);
+  }
+}
+
 /** Twenty small ellipsoids laid out as the bones of a foot, \a gap apart: five rays of three in a
   * row along x, 0.5 apart, and five beside the rays' ends. About \a n points on them in all, each
   * ellipsoid's by its size, drawn from \a seed. */

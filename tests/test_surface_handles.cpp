@@ -16,6 +16,8 @@
 #include <cstdlib>
 #include <array>
 #include <cstdint>
+#include <random>
+#include <set>
 #include <vector>
 
 namespace pcl_wrap::test
@@ -134,6 +136,77 @@ TEST (SurfaceHandles, LargeOrLongHandlesAreNotSmall)
     const detail::SmallHandlePatches patches = detail::smallHandlePatches (triangles, around * tube);
     EXPECT_TRUE (patches.centres.empty ()) << around << " x " << tube;
     EXPECT_TRUE (patches.has_genus) << "a torus, whose handle is not small";
+  }
+}
+
+/** A thin ring of \a rows rows of vertices around its tube, 4 to 8 in each (drawn by \a rng), at
+  * random angles; consecutive rows joined by a strip of triangles, each taking the next vertex
+  * of the row whose next angle is smaller, consistently oriented: a tube whose triangles are as
+  * irregular as a sampled surface's. */
+std::vector<Triangle>
+irregularRing (std::uint32_t rows, std::mt19937& rng)
+{
+  std::uniform_int_distribution<std::uint32_t> count (4, 8);
+  std::uniform_real_distribution<double> unit (0.0, 1.0);
+  std::vector<std::vector<double>> angle (rows);
+  std::vector<std::uint32_t> first (rows + 1, 0);
+  for (std::uint32_t i = 0; i < rows; ++i)
+  {
+    const std::uint32_t n = count (rng);
+    for (std::uint32_t k = 0; k < n; ++k)
+      angle[i].push_back ((k + 0.8 * unit (rng)) / n);
+    first[i + 1] = first[i] + n;
+  }
+  std::vector<Triangle> triangles;
+  for (std::uint32_t i = 0; i < rows; ++i)
+  {
+    const std::uint32_t j = (i + 1) % rows;
+    const std::size_t m = angle[i].size (), n = angle[j].size ();
+    // Walk both rows once around, from their first vertices.
+    std::size_t a = 0, b = 0;
+    while (a < m || b < n)
+    {
+      const double next_a = a < m ? (a + 1 < m ? angle[i][a + 1] : 1.0 + angle[i][0]) : 2.0,
+                   next_b = b < n ? (b + 1 < n ? angle[j][b + 1] : 1.0 + angle[j][0]) : 2.0;
+      const std::uint32_t pa = first[i] + a % m, pb = first[j] + b % n;
+      if (next_a <= next_b)
+      {
+        triangles.push_back ({pa, pb, first[i] + (a + 1) % m});
+        ++a;
+      }
+      else
+      {
+        triangles.push_back ({pa, pb, first[j] + (b + 1) % n});
+        ++b;
+      }
+    }
+  }
+  return triangles;
+}
+
+TEST (SurfaceHandles, ABandRoundAThinTubeWhoseRimsMeetIsNoHandle)
+{
+  // Thin rings with irregular triangles: a patch round the tube can be a band whose two rims
+  // meet at a vertex, where its triangles make two fans. Counted once, that vertex would give
+  // the band (V - E + F = -1, one loop) a genus of its own, and the ring's tube would be cut as a
+  // small handle's; counted once per fan, the band is an annulus, and the ring closes far away.
+  std::mt19937 rng (7);
+  for (int k = 0; k < 100; ++k)
+  {
+    const std::vector<Triangle> ring = irregularRing (60, rng);
+    std::uint32_t n = 0;
+    for (const Triangle& t : ring)
+      n = std::max ({n, t[0] + 1, t[1] + 1, t[2] + 1});
+    // A closed oriented surface: each edge once either way.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> directed;
+    for (const Triangle& t : ring)
+      for (int i = 0; i < 3; ++i)
+        ASSERT_TRUE (directed.insert ({t[i], t[(i + 1) % 3]}).second);
+    for (const auto& [a, b] : directed)
+      ASSERT_TRUE (directed.count ({b, a}));
+    const detail::SmallHandlePatches patches = detail::smallHandlePatches (ring, n);
+    EXPECT_TRUE (patches.centres.empty ()) << "ring " << k;
+    EXPECT_TRUE (patches.has_genus);
   }
 }
 

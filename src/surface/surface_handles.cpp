@@ -141,8 +141,15 @@ struct PatchScratch
   std::vector<std::uint32_t> vertices, front, next;
   std::vector<std::int16_t> level; // per vertex of a tunnel's patch: SmallHandlePatches::level
   std::vector<Edge> edges;
+  std::vector<std::uint32_t> edge_triangle;                     // per boundary edge: its triangle
   std::vector<std::pair<std::uint32_t, std::uint32_t>> loop_of; // boundary vertex, its loop
   UnionFind loops;
+  // Where the patch touches itself: per boundary vertex, its first fan's node (fan_node), and
+  // per pinched one, its triangles in the patch with the fan of each (fans).
+  std::vector<std::uint32_t> fan_node;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> fans; // triangle, fan
+  std::vector<std::uint32_t> fans_begin;                     // per boundary vertex: into fans
+  UnionFind fan_loops;
 };
 
 /** What a patch says of the surface near its centre. */
@@ -200,6 +207,7 @@ public:
     // them): V - E + F with E = (3 F + boundary) / 2.
     long faces = 0, boundary = 0;
     s.edges.clear ();
+    s.edge_triangle.clear ();
     for (std::uint32_t u : s.vertices)
       for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
       {
@@ -215,6 +223,7 @@ public:
           {
             ++boundary;
             s.edges.push_back ({t[i], t[(i + 1) % 3]});
+            s.edge_triangle.push_back (around_.triangle[k]);
           }
         }
       }
@@ -248,8 +257,8 @@ public:
         ends[loops] = i;
       loops += s.loop_of[i].second == i;
     }
-    if (2 - chi - loops >= 2)
-      return HandleKind::handle; // the patch has a genus of its own
+    if (ownGenus (s, stamp, chi, loops, local))
+      return HandleKind::handle;
     if (loops < 2)
       return HandleKind::none;
     if (loopsJoinNear (s, stamp, local))
@@ -268,6 +277,99 @@ public:
       return HandleKind::none;
     measureFromEnds (s, stamp, ends);
     return HandleKind::neck;
+  }
+
+  /** Has the patch (Euler characteristic \a chi, \a loops boundary loops when a vertex on
+    * several is one) a genus of its own? A boundary vertex where the patch touches itself, its
+    * triangles there in several fans (a pinch: more than two boundary edges), counts once per fan
+    * (each fan a vertex of its own on the loops), as a surface's pinch does: a band round a
+    * thin tube whose two rims meet at a vertex is an annulus, not a patch with a handle. */
+  template <class Local>
+  bool ownGenus (PatchScratch& s, std::uint32_t stamp, long chi, long loops, const Local& local) const
+  {
+    const std::size_t n = s.loop_of.size ();
+    s.fan_node.assign (n + 1, 0);
+    for (const Edge& e : s.edges)
+      for (std::uint32_t w : e)
+        ++s.fan_node[local (w)]; // boundary edges at each vertex, for now
+    bool pinched = false;
+    for (std::size_t i = 0; i < n; ++i)
+      pinched = pinched || s.fan_node[i] > 2;
+    if (!pinched)
+      return 2 - chi - loops >= 2;
+    // The fans at each pinched vertex: its triangles in the patch, joined where two share an edge.
+    s.fans.clear ();
+    s.fans_begin.assign (n + 1, 0);
+    std::uint32_t nodes = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      const std::uint32_t w = s.loop_of[i].first, first = static_cast<std::uint32_t> (s.fans.size ());
+      s.fans_begin[i] = first;
+      const bool pinch = s.fan_node[i] > 2;
+      s.fan_node[i] = nodes;
+      if (!pinch)
+      {
+        ++nodes;
+        continue;
+      }
+      for (std::size_t k = around_.begin[w]; k < around_.begin[w + 1]; ++k)
+      {
+        const Triangle& t = triangles_[around_.triangle[k]];
+        if (s.in_patch[t[0]] == stamp && s.in_patch[t[1]] == stamp && s.in_patch[t[2]] == stamp)
+          s.fans.push_back ({around_.triangle[k], static_cast<std::uint32_t> (s.fans.size () - first)});
+      }
+      // Each fan takes the least index of its triangles (a few triangles: pairwise).
+      for (bool changed = true; changed;)
+      {
+        changed = false;
+        for (std::size_t a = first; a < s.fans.size (); ++a)
+          for (std::size_t b = a + 1; b < s.fans.size (); ++b)
+            if (s.fans[a].second != s.fans[b].second && shareEdgeAt (s.fans[a].first, s.fans[b].first, w))
+            {
+              s.fans[a].second = s.fans[b].second = std::min (s.fans[a].second, s.fans[b].second);
+              changed = true;
+            }
+      }
+      // Fans numbered from 0 on, in the order of their least triangles.
+      std::uint32_t count = 0;
+      for (std::size_t a = first; a < s.fans.size (); ++a)
+        if (s.fans[a].second == a - first)
+          s.fans[a].second = count++;
+        else
+          s.fans[a].second = s.fans[first + s.fans[a].second].second;
+      nodes += count;
+      chi += count - 1; // the pinched vertex, split into one per fan
+    }
+    s.fans_begin[n] = static_cast<std::uint32_t> (s.fans.size ());
+    // The loops, with the pinched vertices split.
+    const auto node = [&] (std::uint32_t w, std::uint32_t triangle) {
+      const std::uint32_t i = local (w);
+      for (std::uint32_t a = s.fans_begin[i]; a < s.fans_begin[i + 1]; ++a)
+        if (s.fans[a].first == triangle)
+          return s.fan_node[i] + s.fans[a].second;
+      return s.fan_node[i];
+    };
+    s.fan_loops.reset (nodes);
+    for (std::size_t e = 0; e < s.edges.size (); ++e)
+    {
+      const std::uint32_t p = s.fan_loops.find (node (s.edges[e][0], s.edge_triangle[e])),
+                          q = s.fan_loops.find (node (s.edges[e][1], s.edge_triangle[e]));
+      if (p != q)
+        s.fan_loops.attach (p, q);
+    }
+    long split_loops = 0;
+    for (std::uint32_t k = 0; k < nodes; ++k)
+      split_loops += s.fan_loops.find (k) == k;
+    return 2 - chi - split_loops >= 2;
+  }
+
+  /** Do triangles \a a and \a b, both with vertex \a w, share an edge at \a w? */
+  bool shareEdgeAt (std::uint32_t a, std::uint32_t b, std::uint32_t w) const
+  {
+    for (std::uint32_t x : triangles_[a])
+      if (x != w && (triangles_[b][0] == x || triangles_[b][1] == x || triangles_[b][2] == x))
+        return true;
+    return false;
   }
 
   /** How many fans of triangles meet at \a v: the connected parts of its link, one where the

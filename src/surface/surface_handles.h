@@ -50,7 +50,8 @@ struct SmallHandlePatches
   * than 2 pi + SADDLE_EXCESS. On a sampled surface, smooth or noisy, few vertices do. The
   * centres are a maximal independent set of the vertices looked at (each is one or next to one).
   * Around a centre, the triangles within HANDLE_RINGS rings make a patch; it is a disc where the
-  * surface has no small handle. Where it is not, it holds a handle (its own genus is above zero),
+  * surface has no small handle. Where it is not, it holds a handle (its own genus is above zero,
+  * a boundary vertex where it touches itself counted once per fan of its triangles there),
   * or it goes round a thin tube: a handle's when the rest of the surface joins the patch's
   * boundary loops near the patch (within twice as many rings again), a thin part's (a finger, a
   * tail) when a loop cuts a part off, a tunnel's when the surface opens out past both ends (a hole
