@@ -6,8 +6,9 @@ Writes a corpus of point clouds whose right answer is known, one .xyz file per c
 OUT_DIR/manifest.json: per case its class, the expected number of components and total genus of
 the surface, and the median spacing of its points. The classes are what a surface through the
 points must get right: inner voids (a hollow ball keeps its inner shell), lost parts (coarse
-objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup),
-bridges (linked rings, thin cylinders a few spacings apart), separate objects, noise (0.25, 0.5
+objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup,
+a coupling, a helmet), bridges (linked rings, a chain, thin cylinders a few spacings apart),
+separate objects, noise (0.25, 0.5
 and 1 times the spacing, and uneven density), the closed development meshes of Debian's
 libcgal-demo resampled (with and without noise) and degenerate data (outliers). Fixed seeds: the
 same files every time, each case drawn from its own seed. --quick leaves out the largest clouds.
@@ -109,6 +110,69 @@ def cup(n, wall, height=2.0, r=1.0):
                         (np.pi * (r * r - q * q), lambda k: disk(k, q, r, height))], n)
 
 
+def coupling(n, radius=2.0, thickness=0.5, bore=0.5, holes=8, hole_r=0.25, ring=1.25):
+    """A flange coupling: a disc `thickness` thick with a central bore and `holes` round holes on a
+    ring around it: genus holes + 1. Its faces outside the holes, its rim and the holes' walls are
+    sampled uniformly by area."""
+    centres = np.array([(ring * np.cos(a), ring * np.sin(a)) for a in 2 * np.pi * np.arange(holes) / holes])
+    h = thickness / 2
+
+    def faces(k):
+        out = []
+        while sum(len(o) for o in out) < k:
+            p = disk(2 * k, bore, radius, h)
+            p[:, 2] *= np.where(rng.uniform(size=2 * k) < 0.5, -1, 1)
+            in_hole = ((p[:, None, :2] - centres[None]) ** 2).sum(2).min(1) < hole_r ** 2
+            out.append(p[~in_hole])
+        return np.concatenate(out)[:k]
+
+    def hole_walls(k):
+        return tube(k, hole_r, -h, h) + np.c_[centres[rng.integers(holes, size=k)], np.zeros(k)]
+
+    face_area = 2 * np.pi * (radius ** 2 - bore ** 2 - holes * hole_r ** 2)
+    return area_sample([(face_area, faces), (2 * np.pi * radius * thickness, lambda k: tube(k, radius, -h, h)),
+                        (2 * np.pi * bore * thickness, lambda k: tube(k, bore, -h, h)),
+                        (holes * 2 * np.pi * hole_r * thickness, hole_walls)], n)
+
+
+def helmet(n, outer=1.0, inner=0.9, hole_r=0.15, axes=((0.6, 0, 0.8), (-0.6, 0, 0.8), (0, 0.7, 0.71))):
+    """A thick hemispherical shell (z >= 0) with round holes through it along `axes`: a solid of
+    genus len(axes). Both spheres outside the holes, the rim and the holes' walls are sampled
+    uniformly by area."""
+    axes = unit(np.array(axes, float))
+
+    def in_hole(p):
+        along = p @ axes.T  # (k, holes)
+        across = np.linalg.norm(p[:, None, :] - along[:, :, None] * axes[None], axis=2)
+        return ((along > 0) & (across < hole_r)).any(1)
+
+    def cap(r):
+        def draw(k):
+            out = []
+            while sum(len(o) for o in out) < k:
+                p = unit(rng.normal(size=(3 * k, 3)))
+                p[:, 2] = np.abs(p[:, 2])
+                out.append(r * p[~in_hole(r * p)])
+            return np.concatenate(out)[:k]
+        return draw
+
+    def hole_walls(k):
+        out = []
+        while sum(len(o) for o in out) < k:
+            a = axes[rng.integers(len(axes), size=3 * k)]
+            u = unit(np.cross(a, [1.0, 0.0, 0.0]))
+            v = np.cross(a, u)
+            t = rng.uniform(0, 2 * np.pi, 3 * k)[:, None]
+            p = rng.uniform(0.8 * inner, outer, 3 * k)[:, None] * a + hole_r * (np.cos(t) * u + np.sin(t) * v)
+            r = np.linalg.norm(p, axis=1)
+            out.append(p[(r >= inner) & (r <= outer)])
+        return np.concatenate(out)[:k]
+
+    return area_sample([(2 * np.pi * outer ** 2, cap(outer)), (2 * np.pi * inner ** 2, cap(inner)),
+                        (np.pi * (outer ** 2 - inner ** 2), lambda k: disk(k, inner, outer, 0.0)),
+                        (len(axes) * 2 * np.pi * hole_r * (outer - inner), hole_walls)], n)
+
+
 def mug(n):
     """A thick cup with a handle: a torus in the xz plane whose ends sink into the cup's wall (the
     tube reaches 0.9 from the axis, the wall is 0.85 to 1): its points inside the wall and the
@@ -203,11 +267,21 @@ def cases(quick):
     c.append(("holes", "thick_torus", lambda: torus(3000, 1, 0.6), 1, 1))
     c.append(("holes", "mug", lambda: mug(15000), 1, 1))
     c.append(("holes", "thin_walled_cup", lambda: cup(15000, 0.06), 1, 0))
+    # a coupling's bore and eight holes (0.5 across: 7 spacings at 1,500 points, whose holes' walls
+    # have about 34 points each), a helmet's three holes through a wall 6 spacings thick
+    c.append(("holes", "coupling", lambda: coupling(10000), 1, 9))
+    c.append(("holes", "coupling_coarse", lambda: coupling(1500), 1, 9))
+    c.append(("holes", "helmet_three_holes", lambda: helmet(10000), 1, 3))
     # bridges: linked rings (a chain: each linked with the next), thin cylinders a few spacings
     # apart (radius 0.15, spacing about 0.016: gaps of 2.5 spacings)
     c.append(("bridges", "three_linked_rings",
               lambda: np.r_[torus(2500, 1, 0.15), torus(2500, 1, 0.15, c=(1.2, 0, 0), axis=1),
                             torus(2500, 1, 0.15, c=(2.4, 0, 0))], 3, 3))
+    # a chain of five rings (tubes 0.26 apart where they link: 10 spacings, and 4 at 1,500 points)
+    for n in (10000, 1500):
+        c.append(("bridges", "chain_of_five_rings" + ("" if n == 10000 else "_coarse"),
+                  lambda n=n: np.concatenate([torus(n // 5, 1, 0.12, c=(1.5 * i, 0, 0), axis=2 - i % 2)
+                                              for i in range(5)]), 5, 5))
     c.append(("bridges", "four_thin_cylinders",
               lambda: np.concatenate([capped_cylinder(2500, 0.15, 3.0, c=(0.34 * i, 0, 0)) for i in range(4)]), 4, 0))
     # separate objects stay separate
@@ -216,6 +290,8 @@ def cases(quick):
                   lambda gap=gap: np.r_[sphere(5000), sphere(5000, c=(2 + gap, 0, 0))], 2, 0))
     c.append(("separate", "three_spheres_row",
               lambda: np.r_[sphere(3000), sphere(3000, c=(2.5, 0, 0)), sphere(3000, c=(5.0, 0, 0))], 3, 0))
+    c.append(("separate", "nine_spheres_grid",
+              lambda: np.concatenate([sphere(1111, c=(2.3 * i, 2.3 * j, 0)) for i in range(3) for j in range(3)]), 9, 0))
     c.append(("separate", "sphere_beside_torus", lambda: np.r_[sphere(4000), torus(5000, 1, 0.35, c=(3.0, 0, 0))],
               2, 1))
 
