@@ -161,9 +161,9 @@ irregularRing (std::uint32_t rows, std::mt19937& rng)
   for (std::uint32_t i = 0; i < rows; ++i)
   {
     const std::uint32_t j = (i + 1) % rows;
-    const std::size_t m = angle[i].size (), n = angle[j].size ();
+    const auto m = static_cast<std::uint32_t> (angle[i].size ()), n = static_cast<std::uint32_t> (angle[j].size ());
     // Walk both rows once around, from their first vertices.
-    std::size_t a = 0, b = 0;
+    std::uint32_t a = 0, b = 0;
     while (a < m || b < n)
     {
       const double next_a = a < m ? (a + 1 < m ? angle[i][a + 1] : 1.0 + angle[i][0]) : 2.0,
