@@ -8,10 +8,10 @@ the surface, and the median spacing of its points. The classes are what a surfac
 points must get right: inner voids (a hollow ball keeps its inner shell), lost parts (coarse
 objects side by side), holes (a plate with five bores, a thick torus, a mug, a thin-walled cup,
 a coupling, a helmet), bridges (linked rings, a chain, thin cylinders a few spacings apart),
-separate objects, noise (0.25, 0.5
-and 1 times the spacing, and uneven density), the closed development meshes of Debian's
-libcgal-demo resampled (with and without noise) and degenerate data (outliers). Fixed seeds: the
-same files every time, each case drawn from its own seed. --quick leaves out the largest clouds.
+separate objects, noise (0.25, 0.5 and 1 times the spacing, and uneven density), the closed
+development meshes of Debian's libcgal-demo resampled (with and without noise) and degenerate
+data (outliers). Fixed seeds: the same files every time, each case drawn from its own seed.
+--quick leaves out the largest clouds.
 """
 import json
 import sys
