@@ -149,7 +149,7 @@ struct PatchScratch
   std::vector<std::uint32_t> fan_node;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> fans; // triangle, fan
   std::vector<std::uint32_t> fans_begin;                     // per boundary vertex: into fans
-  UnionFind fan_loops;
+  UnionFind fan_sets, fan_loops;
 };
 
 /** What a patch says of the surface near its centre. */
@@ -316,27 +316,26 @@ public:
       {
         const Triangle& t = triangles_[around_.triangle[k]];
         if (s.in_patch[t[0]] == stamp && s.in_patch[t[1]] == stamp && s.in_patch[t[2]] == stamp)
-          s.fans.push_back ({around_.triangle[k], static_cast<std::uint32_t> (s.fans.size () - first)});
+          s.fans.push_back ({around_.triangle[k], 0});
       }
-      // Each fan takes the least index of its triangles (a few triangles: pairwise).
-      for (bool changed = true; changed;)
-      {
-        changed = false;
-        for (std::size_t a = first; a < s.fans.size (); ++a)
-          for (std::size_t b = a + 1; b < s.fans.size (); ++b)
-            if (s.fans[a].second != s.fans[b].second && shareEdgeAt (s.fans[a].first, s.fans[b].first, w))
-            {
-              s.fans[a].second = s.fans[b].second = std::min (s.fans[a].second, s.fans[b].second);
-              changed = true;
-            }
-      }
+      // The fans: sets of triangles joined pairwise (a few), each set's root its least index.
+      const auto here = static_cast<std::uint32_t> (s.fans.size () - first);
+      s.fan_sets.reset (here);
+      for (std::uint32_t a = 0; a < here; ++a)
+        for (std::uint32_t b = a + 1; b < here; ++b)
+          if (shareEdgeAt (s.fans[first + a].first, s.fans[first + b].first, w))
+          {
+            const std::uint32_t p = s.fan_sets.find (a), q = s.fan_sets.find (b);
+            if (p != q)
+              s.fan_sets.attach (std::max (p, q), std::min (p, q));
+          }
       // Fans numbered from 0 on, in the order of their least triangles.
       std::uint32_t count = 0;
-      for (std::size_t a = first; a < s.fans.size (); ++a)
-        if (s.fans[a].second == a - first)
-          s.fans[a].second = count++;
-        else
-          s.fans[a].second = s.fans[first + s.fans[a].second].second;
+      for (std::uint32_t a = 0; a < here; ++a)
+      {
+        const std::uint32_t root = s.fan_sets.find (a);
+        s.fans[first + a].second = root == a ? count++ : s.fans[first + root].second;
+      }
       nodes += count;
       chi += count - 1; // the pinched vertex, split into one per fan
     }
