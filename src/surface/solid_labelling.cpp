@@ -95,7 +95,7 @@ sphereAngleCosine (double rho2, double ha, double hb)
 
 SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
-  : adjacency_ (adjacency), tets_ (tetrahedra.size () / 4), queue_ (BUCKETS)
+  : adjacency_ (adjacency), tets_ (tetrahedra.size () / 4), labelled_ ((tets_.size () + 63) / 64), queue_ (BUCKETS)
 {
   const std::size_t n = tets_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
@@ -180,7 +180,7 @@ SolidLabelling::castFrom (std::uint32_t t)
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t u = adjacency_.neighbour (t, i);
-    if (u != OUTSIDE_HULL && tets_[u].label == UNKNOWN)
+    if (u != OUTSIDE_HULL && !labelled (u))
       cast (u, r.vote[i] < 0 ? other : r.label, r.vote[i]);
   }
 }
@@ -191,17 +191,23 @@ SolidLabelling::prefetchNextPops (const std::vector<std::uint32_t>& bucket) cons
   // The flood jumps all over the mesh, and each tetrahedron it pops costs a few cache misses: its
   // record and neighbours, then its neighbours' records. A bucket is a stack, so the tetrahedra
   // popped next are mostly known: the record and neighbours of the eighth next are fetched, and
-  // the neighbours' records of the fourth next, whose neighbours were fetched four pops ago.
+  // the neighbours' records of the fourth next, whose neighbours were fetched four pops ago (none
+  // of what is labelled already: it is only skipped).
   if (bucket.size () < 8)
     return;
   const std::uint32_t later = bucket[bucket.size () - 8];
-  prefetch (&tets_[later]);
-  prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (later)]);
+  if (!labelled (later))
+  {
+    prefetch (&tets_[later]);
+    prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (later)]);
+  }
   const std::uint32_t soon = bucket[bucket.size () - 4];
+  if (labelled (soon))
+    return;
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t u = adjacency_.neighbour (soon, i);
-    if (u != OUTSIDE_HULL)
+    if (u != OUTSIDE_HULL && !labelled (u))
       prefetch (&tets_[u]);
   }
 }
@@ -221,9 +227,12 @@ SolidLabelling::run (const Subcomplex* x)
     const std::uint32_t t = bucket.back ();
     bucket.pop_back ();
     prefetchNextPops (bucket);
+    if (labelled (t))
+      continue;
     Record& r = tets_[t];
-    if (r.label != UNKNOWN || bucketOf (r.in, r.out) != b)
-      continue; // labelled, or queued again at another priority
+    if (bucketOf (r.in, r.out) != b)
+      continue; // queued again at another priority
+    markLabelled (t);
     if (r.in == r.out && !x)
     {
       r.label = TIED; // for X to break, when it is known
@@ -257,6 +266,7 @@ SolidLabelling::flood ()
   {
     finished_ = labelsOf (nullptr);
     FilledInParallel<Record> ().swap (tets_);
+    std::vector<std::uint64_t> ().swap (labelled_);
   }
 }
 

@@ -88,9 +88,14 @@ private:
   void prefetchNextPops (const std::vector<std::uint32_t>& bucket) const; ///< what they will read
   void run (const Subcomplex* x); ///< without X, ties are set aside
   SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
+  bool labelled (std::uint32_t t) const { return (labelled_[t >> 6] >> (t & 63)) & 1; }
+  void markLabelled (std::uint32_t t) { labelled_[t >> 6] |= std::uint64_t (1) << (t & 63); }
 
   const Tetrahedra& adjacency_;
   FilledInParallel<Record> tets_;
+  /// A bit per tetrahedron, set once it is labelled (or tied): most of what the flood pops or
+  /// looks at is already labelled, and these bits stay in cache where the records do not.
+  std::vector<std::uint64_t> labelled_;
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
   int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
   std::vector<std::uint32_t> on_hull_;            ///< the tetrahedra with a facet on the hull, ascending
