@@ -10,7 +10,10 @@ knot, an anchor's arms) into which a chain of small, overlapping spheres crosses
 and would carry the outside's label through the tube if a vote for the same side counted as much
 as one for the other side (docs/surface.md, section 1); and a dino whose noisy leg touches its
 belly, where mending a pinch by moving a fan of long tetrahedra across the gap would tie the two
-by a web of many handles (docs/surface.md, section 2). Each must
+by a web of many handles (docs/surface.md, section 2); and coarse dinos whose noise leaves a few
+points beside the surface labelled a solid of their own, which X ties to the rest by edges alone,
+and which would otherwise come out as a closed piece of its own (docs/surface.md, "Joining what
+the labelling cut apart"). Each must
 come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
 points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
 """
@@ -34,6 +37,9 @@ CASES = [  # mesh, points, noise in median spacings, seed
     ("knot1", 10000, 1.0, 1),
     ("knot1", 10000, 1.0, 3),
     ("anchor_dense", 10000, 1.0, 3),
+    ("dino", 10000, 0.25, 3),
+    ("dino", 10000, 1.0, 4),
+    ("dino", 10000, 0.5, 5),
 ]
 
 

@@ -209,6 +209,55 @@ moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::ve
     }
 }
 
+/** Does part \a p, whose vertices are \a corners, hold one of them on no other part's tetrahedra? */
+bool
+holdsAPointAlone (const Tetrahedra& tetrahedra, const std::vector<std::uint32_t>& part, std::uint32_t p,
+                  const std::vector<std::uint32_t>& corners)
+{
+  Star star;
+  return std::any_of (corners.begin (), corners.end (), [&] (std::uint32_t v) {
+    tetrahedra.gatherStar (v, star);
+    return std::all_of (star.tetrahedra ().begin (), star.tetrahedra ().end (),
+                        [&] (std::uint32_t t) { return part[t] == SolidParts::NO_PART || part[t] == p; });
+  });
+}
+
+/** A fragment that X ties to the rest by edges alone (a few noisy points beside the surface) is
+  * joined by any outside tetrahedra of its points' group: of the paths to a part that \a accept
+  * takes whose longest edge is the shortest, the cheapest by summed margins, each search within
+  * FLOATING_REACH tetrahedra (the first path, if the second search does not get so far). Returns
+  * the path, from its end back to the fragment (none if there is none). */
+template <class Accept>
+std::vector<std::uint32_t>
+nearestJoin (CheapestPaths& paths, const std::vector<std::uint32_t>& fragment, const Accept& accept,
+             const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const SolidLabels& labels)
+{
+  const auto in_group = [&] (std::uint32_t t) {
+    const std::uint32_t* v = tetrahedra.vertices (t);
+    return labels.oneGroup (v) && std::none_of (v, v + 4, [&] (std::uint32_t w) { return labels.isApart (w); });
+  };
+  const auto longest_edge_on = [&] (double c, std::uint32_t t) {
+    return std::max (c, longestEdge (tetrahedra, positions, t));
+  };
+  for (std::uint32_t t : fragment)
+    paths.seed (t, 0);
+  const std::uint32_t shortest = paths.run (in_group, accept, FLOATING_REACH, longest_edge_on);
+  if (shortest == CheapestPaths::NONE)
+    return {};
+  std::vector<std::uint32_t> path = paths.trace (shortest);
+  const double bottleneck = paths.cost (shortest);
+  paths.clear ();
+  const auto no_longer = [&] (std::uint32_t t) {
+    return in_group (t) && longestEdge (tetrahedra, positions, t) <= bottleneck;
+  };
+  for (std::uint32_t t : fragment)
+    paths.seed (t, 0);
+  const std::uint32_t cheapest = paths.run (no_longer, accept, FLOATING_REACH, summedMargins (labels));
+  if (cheapest != CheapestPaths::NONE)
+    path = paths.trace (cheapest);
+  return path;
+}
+
 } // namespace
 
 bool
@@ -316,11 +365,19 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     for (std::uint32_t t : members[p])
       paths.seed (t, 0);
     const std::uint32_t end = paths.run (passable, accept, n, summedMargins (labels));
+    std::vector<std::uint32_t> path;
     if (end != NONE)
+      path = paths.trace (end);
+    else if (fragment && holdsAPointAlone (tetrahedra, part, p, corners))
+    {
+      paths.clear ();
+      path = nearestJoin (paths, members[p], accept, tetrahedra, positions, labels);
+    }
+    if (!path.empty ())
     {
       joined.attach (mine, goal);
       --join.parts;
-      moveInside (paths.trace (end), labels, moved_flags, join.moved);
+      moveInside (path, labels, moved_flags, join.moved);
     }
     paths.clear ();
     for (std::uint32_t v : corners)

@@ -74,7 +74,9 @@ struct SolidJoin
   * a part cut off at a neck (a horn, a leg) to the rest, but it also reaches across the gaps
   * between separate objects. So a path ends only at a part it reaches across a gap the sampling
   * does not resolve (its ends within UNRESOLVED_GAP spacings), except from a fragment of fewer than 32
-  * vertices, too small to be an object of its own, which joins the first part it reaches.
+  * vertices, too small to be an object of its own, which joins the first part it reaches. A
+  * fragment that X ties to no part and that holds a point no other part holds (a few noisy points
+  * beside the surface) joins the part nearest it through any outside tetrahedra of its group.
   * \param[in] positions per vertex
   * \param[in] parts the parts of the solid \a labels
   * \param[in,out] moved per tetrahedron, set for those it moves */
