@@ -173,13 +173,14 @@ def helmet(n, outer=1.0, inner=0.9, hole_r=0.15, axes=((0.6, 0, 0.8), (-0.6, 0, 
                         (len(axes) * 2 * np.pi * hole_r * (outer - inner), hole_walls)], n)
 
 
-def mug(n):
-    """A thick cup with a handle: a torus in the xz plane whose ends sink into the cup's wall (the
-    tube reaches 0.9 from the axis, the wall is 0.85 to 1): its points inside the wall and the
-    wall's inside the tube left out. Genus 1."""
+def mug(n, handle_x=1.45):
+    """A thick cup with a handle: a torus in the xz plane, centred handle_x from the axis, whose
+    ends sink into the cup's wall (at 1.45 the tube reaches 0.9 from the axis, the wall is 0.85 to
+    1, and the handle's axis meets the wall's outside at a grazing angle; at 1.15 it meets it at
+    about 70 degrees): its points inside the wall and the wall's inside the tube left out. Genus 1."""
     body = cup(int(0.8 * n), 0.15)
-    body = body[~(((np.hypot(body[:, 0] - 1.45, body[:, 2] - 1.0) - 0.45) ** 2 + body[:, 1] ** 2 < 0.1 ** 2))]
-    handle = torus(n - len(body), 0.45, 0.1, c=(1.45, 0, 1.0), axis=1)
+    body = body[~(((np.hypot(body[:, 0] - handle_x, body[:, 2] - 1.0) - 0.45) ** 2 + body[:, 1] ** 2 < 0.1 ** 2))]
+    handle = torus(n - len(body), 0.45, 0.1, c=(handle_x, 0, 1.0), axis=1)
     handle = handle[np.hypot(handle[:, 0], handle[:, 1]) > 1.0]
     return np.r_[body, handle]
 
