@@ -195,6 +195,15 @@ summedMargins (const SolidLabels& labels)
   return [&labels] (double c, std::uint32_t t) { return c + labels.margin[t]; };
 }
 
+/** The step of CheapestPaths::run() for a path's cost by its longest edge. */
+auto
+longestEdgeOnPath (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions)
+{
+  return [&tetrahedra, &positions] (double c, std::uint32_t t) {
+    return std::max (c, longestEdge (tetrahedra, positions, t));
+  };
+}
+
 /** Moves the outside tetrahedra of \a path inside. */
 void
 moveInside (const std::vector<std::uint32_t>& path, SolidLabels& labels, std::vector<std::uint8_t>& moved_flags,
@@ -236,12 +245,10 @@ nearestJoin (CheapestPaths& paths, const std::vector<std::uint32_t>& fragment, c
     const std::uint32_t* v = tetrahedra.vertices (t);
     return labels.oneGroup (v) && std::none_of (v, v + 4, [&] (std::uint32_t w) { return labels.isApart (w); });
   };
-  const auto longest_edge_on = [&] (double c, std::uint32_t t) {
-    return std::max (c, longestEdge (tetrahedra, positions, t));
-  };
   for (std::uint32_t t : fragment)
     paths.seed (t, 0);
-  const std::uint32_t shortest = paths.run (in_group, accept, FLOATING_REACH, longest_edge_on);
+  const std::uint32_t shortest =
+      paths.run (in_group, accept, FLOATING_REACH, longestEdgeOnPath (tetrahedra, positions));
   if (shortest == CheapestPaths::NONE)
     return {};
   std::vector<std::uint32_t> path = paths.trace (shortest);
@@ -406,7 +413,6 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
   const auto in_x = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
   const auto accept = [] (std::uint32_t, std::uint32_t) { return true; };
   const auto longest_edge = [&] (std::uint32_t t) { return longestEdge (tetrahedra, positions, t); };
-  const auto longest_edge_on = [&] (double c, std::uint32_t t) { return std::max (c, longest_edge (t)); };
   const auto touches_solid = [&] (std::uint32_t t) {
     for (int i = 0; i < 4; ++i)
     {
@@ -475,7 +481,8 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
       for (std::uint32_t t : star.tetrahedra ())
         if (short_in_x (t))
           paths.seed (t, longest_edge (t));
-      const std::uint32_t end = paths.run (short_in_x, accept, FLOATING_REACH, longest_edge_on);
+      const std::uint32_t end =
+          paths.run (short_in_x, accept, FLOATING_REACH, longestEdgeOnPath (tetrahedra, positions));
       if (end != NONE)
       {
         std::vector<std::uint32_t> shorter = paths.trace (end);
