@@ -235,18 +235,22 @@ holdsAPointAlone (const Tetrahedra& tetrahedra, const std::vector<std::uint32_t>
   * joined by any outside tetrahedra of its points' group: of the paths to a part that \a accept
   * takes whose longest edge is the shortest, the cheapest by summed margins, each search within
   * FLOATING_REACH tetrahedra (the first path, if the second search does not get so far). Returns
-  * the path, from its end back to the fragment (none if there is none). */
+  * the path, from its end back to the fragment (none if there is none). With \a moves, the
+  * tetrahedra of \a fragment are outside ones that the path moves too (a floating point's star),
+  * and count as its others do. */
 template <class Accept>
 std::vector<std::uint32_t>
 nearestJoin (CheapestPaths& paths, const std::vector<std::uint32_t>& fragment, const Accept& accept,
-             const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const SolidLabels& labels)
+             const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const SolidLabels& labels,
+             bool moves = false)
 {
   const auto in_group = [&] (std::uint32_t t) {
     const std::uint32_t* v = tetrahedra.vertices (t);
     return labels.oneGroup (v) && std::none_of (v, v + 4, [&] (std::uint32_t w) { return labels.isApart (w); });
   };
   for (std::uint32_t t : fragment)
-    paths.seed (t, 0);
+    if (!moves || in_group (t))
+      paths.seed (t, moves ? longestEdge (tetrahedra, positions, t) : 0.0);
   const std::uint32_t shortest =
       paths.run (in_group, accept, FLOATING_REACH, longestEdgeOnPath (tetrahedra, positions));
   if (shortest == CheapestPaths::NONE)
@@ -258,7 +262,8 @@ nearestJoin (CheapestPaths& paths, const std::vector<std::uint32_t>& fragment, c
     return in_group (t) && longestEdge (tetrahedra, positions, t) <= bottleneck;
   };
   for (std::uint32_t t : fragment)
-    paths.seed (t, 0);
+    if (!moves || no_longer (t))
+      paths.seed (t, moves ? double (labels.margin[t]) : 0.0);
   const std::uint32_t cheapest = paths.run (no_longer, accept, FLOATING_REACH, summedMargins (labels));
   if (cheapest != CheapestPaths::NONE)
     path = paths.trace (cheapest);
@@ -410,7 +415,9 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
   });
   std::vector<std::uint32_t> moved;
   CheapestPaths paths (tetrahedra, labels);
-  const auto in_x = [&] (std::uint32_t t) { return inX (tetrahedra, x, t); };
+  const auto in_x = [&] (std::uint32_t t) {
+    return inX (tetrahedra, x, t) && labels.oneGroup (tetrahedra.vertices (t));
+  };
   const auto accept = [] (std::uint32_t, std::uint32_t) { return true; };
   const auto longest_edge = [&] (std::uint32_t t) { return longestEdge (tetrahedra, positions, t); };
   const auto touches_solid = [&] (std::uint32_t t) {
@@ -451,10 +458,11 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
       continue;
     tetrahedra.gatherStar (v, star);
     // The way the point comes on otherwise: a tetrahedron of its star that touches the solid,
-    // moved by the mending, or else X's cheapest path to the solid.
+    // moved by the mending (within one group of the sample), or else X's cheapest path to the
+    // solid.
     double usual = std::numeric_limits<double>::infinity ();
     for (std::uint32_t t : star.tetrahedra ())
-      if (touches_solid (t))
+      if (touches_solid (t) && labels.oneGroup (tetrahedra.vertices (t)))
         usual = std::min (usual, longest_edge (t));
     std::vector<std::uint32_t> path;
     if (usual == std::numeric_limits<double>::infinity ())
@@ -464,13 +472,22 @@ bringFloatingPointsOn (const Tetrahedra& tetrahedra, const Subcomplex& x, const 
           paths.seed (t, labels.margin[t]);
       const std::uint32_t end = paths.run (in_x, accept, FLOATING_REACH, summedMargins (labels));
       if (end != NONE)
-      {
         path = paths.trace (end);
+      paths.clear ();
+      if (path.empty () && !labels.group.empty ())
+      {
+        // No tetrahedron of X around the point either: W holds it by a sheet across the gap
+        // between its group and another (a blob's point facing an object). It comes on as a
+        // fragment of its group does, through any tetrahedra of the group (nearestJoin()).
+        path = nearestJoin (paths, star.tetrahedra (), accept, tetrahedra, positions, labels, true);
+        paths.clear ();
+      }
+      if (!path.empty ())
+      {
         usual = 0.0;
         for (std::uint32_t t : path)
           usual = std::max (usual, longest_edge (t));
       }
-      paths.clear ();
     }
     // Where the solid beside the point is a fold or a crease away, that way can be a spike across
     // the object: a path of X's much shorter tetrahedra (the shortest longest edge first) is
