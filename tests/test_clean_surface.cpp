@@ -453,6 +453,28 @@ TEST (CleanSurface, ABlobOfPointsBesideAnObjectIsAPieceOfItsOwn)
   }
 }
 
+TEST (CleanSurface, NoMoveTakesAPointApartOn)
+{
+  // Three points far from a sphere are apart, and their tetrahedra outside. Mending a pinch of the
+  // sphere's surface moves a part of a vertex's star, and a part across the gap to the three would
+  // take one to three of them on, by a spike (with these seeds): a tetrahedron with a corner
+  // apart, or corners in two groups of the sample, does not move inside.
+  const std::vector<Point3> sphere = sphereSample (3000, 1);
+  for (unsigned seed : {69u, 165u, 170u, 179u, 186u, 192u, 199u, 272u})
+  {
+    SCOPED_TRACE (seed);
+    std::vector<Point3> points = sphere;
+    const std::vector<Point3> blob = gaussianBlob (3, {5, 0, 0}, 0.02, seed);
+    points.insert (points.end (), blob.begin (), blob.end ());
+    const WrapResult r = computeWrap (points);
+    EXPECT_EQ (r.apart, (std::vector<PointIndex>{3000, 3001, 3002}));
+    const SurfaceReport s = describeSurface (trianglesOf (r));
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_EQ (s.components, 1u);
+    EXPECT_LT (longestEdgeInMedianEdges (points), 4.0);
+  }
+}
+
 TEST (CleanSurface, AnOutlierBesideAVolumeIsReportedWhateverTheOutput)
 {
   // Gaussian points with an outlier far away: a volume, whose labelled solid can leave more of W's
