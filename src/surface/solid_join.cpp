@@ -244,10 +244,7 @@ nearestJoin (CheapestPaths& paths, const std::vector<std::uint32_t>& fragment, c
              const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const SolidLabels& labels,
              bool moves = false)
 {
-  const auto in_group = [&] (std::uint32_t t) {
-    const std::uint32_t* v = tetrahedra.vertices (t);
-    return labels.oneGroup (v) && std::none_of (v, v + 4, [&] (std::uint32_t w) { return labels.isApart (w); });
-  };
+  const auto in_group = [&] (std::uint32_t t) { return labels.mayGoInside (tetrahedra.vertices (t)); };
   for (std::uint32_t t : fragment)
     if (!moves || in_group (t))
       paths.seed (t, moves ? longestEdge (tetrahedra, positions, t) : 0.0);

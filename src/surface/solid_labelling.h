@@ -37,6 +37,13 @@ struct SolidLabels
   {
     return group.empty () || (group[v[0]] == group[v[1]] && group[v[0]] == group[v[2]] && group[v[0]] == group[v[3]]);
   }
+  /** May a tetrahedron with the four vertices \a v move into the solid to bring a point on? Not
+    * with a corner apart from all other points, nor across the gap between two groups: the surface
+    * would reach that point, or the other group, by a spike. */
+  bool mayGoInside (const std::uint32_t* v) const
+  {
+    return oneGroup (v) && !isApart (v[0]) && !isApart (v[1]) && !isApart (v[2]) && !isApart (v[3]);
+  }
 };
 
 /** \brief Labels the Delaunay tetrahedra inside or outside the sampled solid.

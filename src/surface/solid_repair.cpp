@@ -914,19 +914,10 @@ private:
     std::array<std::size_t, 2> count{}; // [0] outside, [1] inside
     std::vector<std::uint8_t> side;     // per part
     std::vector<double> weight;         // per part: summed margins (infinite beyond the hull)
-    std::vector<std::uint8_t> movable;  // per part: none of it moved before, nor barred inside (mayGoInside())
+    std::vector<std::uint8_t> movable;  // per part: none moved before, none barred (mayGoInside())
   };
 
   bool inside (std::uint32_t t) const { return t != OUTSIDE_HULL && labels_.inside[t]; }
-
-  /** May the outside tetrahedron \a t move into the solid? Not with a corner apart from all other
-    * points, nor with corners in two groups of the sample: the surface would reach that point, or
-    * across the gap between the groups, by a spike. */
-  bool mayGoInside (std::uint32_t t) const
-  {
-    const std::uint32_t* v = tetrahedra_.vertices (t);
-    return labels_.oneGroup (v) && std::none_of (v, v + 4, [&] (std::uint32_t w) { return labels_.isApart (w); });
-  }
 
   /** In a volume, was \a v buried from the start (and so stays inside)? */
   bool staysBuried (std::uint32_t v) const { return !stays_buried_.empty () && stays_buried_[v]; }
@@ -995,7 +986,7 @@ private:
       {
         const std::uint32_t t = s.star[k];
         parts.weight[p] += labels_.margin[t];
-        if (flipped_[t] || (!inside (t) && !mayGoInside (t)))
+        if (flipped_[t] || (!inside (t) && !labels_.mayGoInside (tetrahedra_.vertices (t))))
           parts.movable[p] = 0;
       }
     }
