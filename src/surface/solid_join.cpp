@@ -351,12 +351,14 @@ joinPartsThroughX (const Tetrahedra& tetrahedra, const Subcomplex& x, const std:
     const std::vector<std::uint32_t> corners = tetrahedra.verticesOf (members[p]);
     const bool fragment = corners.size () < FRAGMENT_VERTICES;
     // A part of its own may only close a gap at its surface: its search stays among the
-    // tetrahedra that touch it.
+    // tetrahedra that touch it. Neither crosses the gap between two groups of the sample: a
+    // fragment of a blob beside an object is no tip cut off it.
     for (std::uint32_t v : corners)
       on_part[v] = !fragment;
     const auto passable = [&] (std::uint32_t t) {
       const std::uint32_t* v = tetrahedra.vertices (t);
-      return inX (tetrahedra, x, t) && (fragment || on_part[v[0]] || on_part[v[1]] || on_part[v[2]] || on_part[v[3]]);
+      return inX (tetrahedra, x, t) && labels.oneGroup (v) &&
+             (fragment || on_part[v[0]] || on_part[v[1]] || on_part[v[2]] || on_part[v[3]]);
     };
     // A fragment joins the part it reaches first; a part of its own only one it was cut from,
     // across a gap the sampling does not resolve.

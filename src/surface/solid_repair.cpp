@@ -36,7 +36,7 @@ constexpr std::uint32_t NONE = ~std::uint32_t (0);
 struct StarScratch
 {
   Star star;
-  Star corner; // the star of a corner of a move (strandsACorner())
+  Star corner; // the star of a corner of a move (trapsACorner())
   std::vector<std::uint32_t> edge_uses, id_of_root;
   std::vector<std::array<std::uint32_t, 2>> link; // gatherSurfaceLink()'s edges
   UnionFind parts;
@@ -1007,7 +1007,7 @@ private:
   {
     std::vector<std::uint32_t> candidates;
     for (std::uint32_t p = 0; p < parts.side.size (); ++p)
-      if (parts.movable[p] && parts.count[parts.side[p]] > 1 && !strandsACorner (members (s, parts, p), s))
+      if (parts.movable[p] && parts.count[parts.side[p]] > 1 && !trapsACorner (members (s, parts, p), s))
         candidates.push_back (p);
     std::stable_sort (candidates.begin (), candidates.end (),
                       [&] (std::uint32_t p, std::uint32_t q) { return parts.weight[p] < parts.weight[q]; });
@@ -1015,36 +1015,38 @@ private:
         candidates, [&] (std::uint32_t p) { return members (s, parts, p); }, s, Fallback::making_one_handle);
   }
 
-  /** Would moving \a move, tetrahedra of the star that \a s holds, take a corner of it other than
-    * the star's vertex off the surface: leave its star all outside (floating), or all inside off
-    * the hull (buried, where it does not stay so)? Its star can then be closed off by the
-    * tetrahedra around it (a point in a flat pocket of four), so that no later move of a single
-    * tetrahedron brings it back. */
-  bool strandsACorner (const std::vector<std::uint32_t>& move, StarScratch& s) const
+  /** Would moving out \a move, inside tetrahedra of the star that \a s holds, leave a corner of
+    * it other than the star's vertex floating (its star all outside) with no tetrahedron of its
+    * star that the mending of a floating point could move in (mendVertex(): one unmoved, within
+    * one group, next to an inside one)? A point in a flat pocket of four tetrahedra whose
+    * neighbours across the pocket are all outside is so trapped once its last inside tetrahedron
+    * moves out. (In a volume, whose solid is X's, a pair of tetrahedra may move to bring a point
+    * on.) */
+  bool trapsACorner (const std::vector<std::uint32_t>& move, StarScratch& s) const
   {
-    const std::uint32_t v = s.star.vertex ();
-    for (std::uint32_t t : move)
-      for (int i = 0; i < 4; ++i)
-      {
-        const std::uint32_t u = tetrahedra_.vertex (t, i);
-        if (u == v || labels_.isApart (u) || staysBuried (u))
-          continue;
-        tetrahedra_.gatherStar (u, s.corner);
-        bool before[2] = {false, false}, after[2] = {false, false};
-        for (std::uint32_t c : s.corner.tetrahedra ())
-        {
-          const bool in = inside (c), moved = std::find (move.begin (), move.end (), c) != move.end ();
-          bool on_hull = false; // u on a hull facet of c
-          for (int j = 0; j < 4; ++j)
-            on_hull = on_hull || (tetrahedra_.vertex (c, j) != u && tetrahedra_.neighbour (c, j) == OUTSIDE_HULL);
-          before[in] = true;
-          after[in != moved] = true;
-          before[0] = before[0] || (in && on_hull);
-          after[0] = after[0] || (in != moved && on_hull);
-        }
-        if (before[0] && before[1] && !(after[0] && after[1]))
-          return true;
-      }
+    if (!stays_buried_.empty () || !inside (move.front ()))
+      return false;
+    const auto moved = [&] (std::uint32_t t) { return std::find (move.begin (), move.end (), t) != move.end (); };
+    const auto inside_after = [&] (std::uint32_t t) { return inside (t) && !moved (t); };
+    for (std::uint32_t u : tetrahedra_.verticesOf (move))
+    {
+      if (u == s.star.vertex () || labels_.isApart (u))
+        continue;
+      tetrahedra_.gatherStar (u, s.corner);
+      const auto& star = s.corner.tetrahedra ();
+      if (std::any_of (star.begin (), star.end (), inside_after))
+        continue; // not floating
+      const bool rescued = std::any_of (star.begin (), star.end (), [&] (std::uint32_t c) {
+        if (moved (c) || flipped_[c] || !labels_.oneGroup (tetrahedra_.vertices (c)))
+          return false;
+        for (int j = 0; j < 4; ++j)
+          if (inside_after (tetrahedra_.neighbour (c, j)))
+            return true;
+        return false;
+      });
+      if (!rescued)
+        return true;
+    }
     return false;
   }
 
