@@ -510,6 +510,27 @@ TEST (CleanSurface, NoMendingMoveTakesAPointOff)
   }
 }
 
+TEST (CleanSurface, APointTheMendingLeftFloatingComesOnInASecondRepair)
+{
+  // Gaussian blobs, volumes: in these the repair left points of W off the solid's surface, more
+  // than it had points that W has not, so the output was W, split. A second repair from those
+  // labels brings them on (through X, or the tetrahedra of their group), and the output is the
+  // solid's.
+  for (const auto& [size, seed] :
+       {std::pair{20u, 14u}, {40u, 15u}, {40u, 38u}, {40u, 67u}, {60u, 108u}, {60u, 128u}, {80u, 30u}})
+  {
+    SCOPED_TRACE (std::to_string (size) + " points, seed " + std::to_string (seed));
+    const std::vector<Point3> points = gaussianBlob (size, {0, 0, 0}, 1.0, seed);
+    const WrapResult r = computeWrap (points);
+    EXPECT_FALSE (r.statistics.surface_is_w);
+    const SurfaceReport s = describeSurface (trianglesOf (r));
+    EXPECT_TRUE (s.closed_manifold);
+    EXPECT_TRUE (s.consistently_oriented);
+    EXPECT_GE (pointsOnSurface (r, points.size ()).size (),
+               pointsOnSurface (computeWrap (points, rawOutput ()), points.size ()).size ());
+  }
+}
+
 TEST (CleanSurface, AnOutlierBesideAVolumeIsReportedWhateverTheOutput)
 {
   // Gaussian points with an outlier far away: a volume, whose labelled solid can leave more of W's

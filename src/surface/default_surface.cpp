@@ -257,8 +257,17 @@ DefaultSurface::surface (const Subcomplex& x, const std::vector<Point3>& positio
   stats.tetrahedra_moved = repair.flipped;
   // What the repair left of W's points off the surface, a tetrahedron away. (A single layer's
   // solid that leaves points off is the sign that X's layer is the surface: below.)
-  const PointsOfWBrought brought =
-      single_layer ? PointsOfWBrought{} : bringPointsOfWOn (adjacency_, x, positions, labels);
+  PointsOfWBrought brought = single_layer ? PointsOfWBrought{} : bringPointsOfWOn (adjacency_, x, positions, labels);
+  if (!brought.left_off.empty () && fewerPointsThanW (adjacency_, x, labels, brought))
+  {
+    // The mending can leave a point floating where its way on, a tetrahedron next to the solid,
+    // was taken from it by a neighbour's move: once more from these labels, the repair brings
+    // it on as it does the labelling's floating points, through X or its group's tetrahedra.
+    stats.tetrahedra_moved += brought.moved.size ();
+    repair = repairSolid (adjacency_, x, positions, labels, volume);
+    stats.tetrahedra_moved += repair.flipped;
+    brought = bringPointsOfWOn (adjacency_, x, positions, labels);
+  }
   if (!brought.moved.empty ())
   {
     stats.tetrahedra_moved += brought.moved.size ();
