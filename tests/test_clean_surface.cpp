@@ -372,12 +372,29 @@ TEST (CleanSurface, AnOutlierIsLeftOffNotDrawnIntoASpike)
   // W holds several such points by triangles, sheets across the scene). The default surface
   // leaves such a point off and says so, and a cluster of fewer points than an object has, some
   // inside the others' hull (as an interior point, one the paper's W holds by a sheet to the
-  // sphere); every other point stays on it.
+  // sphere); every other point stays on it. So are far outliers whose Delaunay neighbours are
+  // mostly, or all, other outliers, or that are nearest each other (the last two sets).
   std::vector<Point3> sphere = sphereSample (3000, 1);
   std::vector<std::vector<Point3>> outliers = {{{1e3, 0, 0}},
                                                {{0, 0, 6}},
                                                {{3, 0, 0}, {0, -4, 1}, {-2, 2, 2}, {0.5, 0.5, -5}, {-6, -1, 0}},
-                                               {{5, 0, 0}, {5.05, 0, 0}, {5, 0.05, 0}}};
+                                               {{5, 0, 0}, {5.05, 0, 0}, {5, 0.05, 0}},
+                                               {{1.8, -2.21, 5.54},
+                                                {-7.06, 4.42, -2.43},
+                                                {8.66, 0.7, -3.94},
+                                                {-1.25, -6.56, -2.86},
+                                                {4.06, -1.87, 5.83},
+                                                {0.84, -5.95, -0.51},
+                                                {1.31, -4.98, 8.05},
+                                                {-5.32, -2.25, 3.61}},
+                                               {{-1.48, -4.79, 5.27},
+                                                {6.28, 4.55, -6.24},
+                                                {-2.3, -5.7, 3.86},
+                                                {1.95, -6.99, 4.31},
+                                                {1.25, 6.68, -0.98},
+                                                {-2.18, -6.23, 4.03},
+                                                {-5.92, -3.13, 3.75},
+                                                {5.43, -2.7, 2.9}}};
   for (std::size_t size : {8, 20})
     outliers.push_back (cluster (size, {5, 0, 0}));
   for (const std::vector<Point3>& far : outliers)

@@ -78,40 +78,60 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
       std::none_of (size.begin (), size.end (), [] (std::uint32_t s) { return s > 0 && s <= APART_CLUSTER; }))
     return {};
   const auto length = [&] (SimplexId e) { return edgeLength (complex, positions, e); };
-  // Per small group: its distance to the nearest point outside, its Delaunay neighbours outside
-  // (counted once per edge) and those of them that are points of an object (a group larger than
-  // APART_CLUSTER) more than APART_SPACINGS times nearer their own nearest point. A point inside
-  // the group's hull may have no neighbour outside: the group is apart or not as a whole. Small
-  // groups with no object beside them (a few blobs of points, all far apart) are what the points
-  // show, and none is apart.
-  std::vector<double> out (n, std::numeric_limits<double>::infinity ());
-  std::vector<std::uint32_t> outside (n, 0), denser (n, 0);
-  for (int pass = 0; pass < 2; ++pass)
-    for (SimplexId e = 0; e < edges; ++e)
-    {
-      const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
-      const std::uint32_t group_a = group[a], group_b = group[b];
-      if (group_a == group_b)
-        continue;
-      for (const auto& [g, w] : {std::pair (group_a, b), std::pair (group_b, a)})
+  // Per small group: its distance to the nearest point of an object (a group larger than
+  // APART_CLUSTER), its Delaunay neighbours outside (counted once per edge) and those of them that
+  // are points of an object more than APART_SPACINGS times nearer their own nearest point. A
+  // point inside the group's hull may have no neighbour outside: the group is apart or not as a
+  // whole. Small groups with no object beside them (a few blobs of points, all far apart) are
+  // what the points show, and none is apart. A neighbour that is apart itself says nothing of the
+  // sample around a group: far outliers whose Delaunay neighbours are mostly each other are
+  // judged again by the others, and one whose neighbours are all apart is apart, until no more
+  // is.
+  std::vector<std::uint8_t> group_apart (n, 0);
+  std::vector<double> out (n);
+  std::vector<std::uint32_t> outside (n), denser (n), by_apart (n);
+  for (bool more = true; more;)
+  {
+    std::fill (out.begin (), out.end (), std::numeric_limits<double>::infinity ());
+    std::fill (outside.begin (), outside.end (), 0u);
+    std::fill (denser.begin (), denser.end (), 0u);
+    std::fill (by_apart.begin (), by_apart.end (), 0u);
+    for (int pass = 0; pass < 2; ++pass)
+      for (SimplexId e = 0; e < edges; ++e)
       {
-        if (size[g] > APART_CLUSTER)
+        const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
+        const std::uint32_t group_a = group[a], group_b = group[b];
+        if (group_a == group_b)
           continue;
-        if (pass == 0)
-          out[g] = std::min (out[g], length (e));
-        else
+        for (const auto& [g, w] : {std::pair (group_a, b), std::pair (group_b, a)})
         {
-          ++outside[g];
-          denser[g] += size[group[w]] > APART_CLUSTER && APART_SPACINGS * nearest[w] < out[g];
+          if (size[g] > APART_CLUSTER || group_apart[g])
+            continue;
+          if (group_apart[group[w]])
+            by_apart[g] += pass;
+          else if (pass == 0)
+          {
+            if (size[group[w]] > APART_CLUSTER)
+              out[g] = std::min (out[g], length (e));
+          }
+          else
+          {
+            ++outside[g];
+            denser[g] += size[group[w]] > APART_CLUSTER && APART_SPACINGS * nearest[w] < out[g];
+          }
         }
       }
-    }
+    more = false;
+    for (std::uint32_t g = 0; g < n; ++g)
+      if (size[g] > 0 && size[g] <= APART_CLUSTER && !group_apart[g] &&
+          (4 * denser[g] > 3 * outside[g] || (outside[g] == 0 && by_apart[g] > 0)))
+        more = group_apart[g] = 1;
+  }
   std::vector<std::uint8_t> apart (n, 0);
   bool any = false;
   for (std::uint32_t v = 0; v < n; ++v)
   {
-    const std::uint32_t g = group[v];
-    apart[v] = size[g] <= APART_CLUSTER && 4 * denser[g] > 3 * outside[g];
+    apart[v] = group_apart[group[v]];
     any = any || apart[v];
   }
   return any ? apart : std::vector<std::uint8_t> ();

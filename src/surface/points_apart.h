@@ -14,13 +14,13 @@ namespace pcl_wrap::detail
 
 /** \brief A point is apart from the others (an outlier) when it is more than this many median
   * spacings of the sample from every point but at most APART_CLUSTER - 1 others (its group), and
-  * the group's nearest point outside is more than this many times farther from it than three
-  * quarters of the group's Delaunay neighbours outside are from their own nearest points, those
-  * being points of an object (a group of more than APART_CLUSTER points). An
-  * outlier beside a sampled surface has nearly all its Delaunay neighbours on that surface; the
-  * vertices of a mesh, sparse on its flat parts, are at most about ten median spacings apart,
-  * with half their neighbours as sparse, and a part of a sample much sparser than the rest has
-  * neighbours as sparse. */
+  * the group's nearest point of an object (a group of more than APART_CLUSTER points) is more than
+  * this many times farther from it than three quarters of the group's Delaunay neighbours outside
+  * (but those apart themselves) are from their own nearest points, those being points of an
+  * object. An outlier beside a sampled surface has nearly all its Delaunay neighbours on that
+  * surface; the vertices of a mesh, sparse on its flat parts, are at most about ten median
+  * spacings apart, with half their neighbours as sparse, and a part of a sample much sparser than
+  * the rest has neighbours as sparse. */
 constexpr double APART_SPACINGS = 16.0;
 
 /** \brief Up to this many outliers close together are apart: fewer points than FRAGMENT_VERTICES
