@@ -37,6 +37,9 @@ struct StarScratch
 {
   Star star;
   Star corner; // the star of a corner of a move (trapsACorner())
+  /** The ids of the block being mended (mendWithin()): no other thread moves a tetrahedron whose
+    * vertices all lie in it. */
+  std::uint32_t lo = 0, hi = ~std::uint32_t (0);
   std::vector<std::uint32_t> edge_uses, id_of_root;
   std::vector<std::array<std::uint32_t, 2>> link; // gatherSurfaceLink()'s edges
   UnionFind parts;
@@ -868,6 +871,8 @@ private:
         continue;
       }
       bool pinched = false;
+      s.lo = lo;
+      s.hi = hi;
       const std::vector<std::uint32_t> flips = mendVertex (s, pinched);
       unmended_[v] = flips.empty () && pinched;
       for (std::uint32_t t : flips)
@@ -901,10 +906,16 @@ private:
 
   bool starWithin (const Star& star, std::uint32_t lo, std::uint32_t hi) const
   {
-    for (std::uint32_t t : star.tetrahedra ())
-      for (int i = 0; i < 4; ++i)
-        if (tetrahedra_.vertex (t, i) < lo || tetrahedra_.vertex (t, i) >= hi)
-          return false;
+    return std::all_of (star.tetrahedra ().begin (), star.tetrahedra ().end (),
+                        [&] (std::uint32_t t) { return within (t, lo, hi); });
+  }
+
+  /** Are the vertices of tetrahedron \a t all in [lo, hi)? */
+  bool within (std::uint32_t t, std::uint32_t lo, std::uint32_t hi) const
+  {
+    for (int i = 0; i < 4; ++i)
+      if (tetrahedra_.vertex (t, i) < lo || tetrahedra_.vertex (t, i) >= hi)
+        return false;
     return true;
   }
 
@@ -1021,7 +1032,9 @@ private:
     * one group, next to an inside one)? A point in a flat pocket of four tetrahedra whose
     * neighbours across the pocket are all outside is so trapped once its last inside tetrahedron
     * moves out. (In a volume, whose solid is X's, a pair of tetrahedra may move to bring a point
-    * on.) */
+    * on.) A tetrahedron across a corner's star with a vertex outside the block being mended may be
+    * moving on another thread: it counts as a way on, so that the answer depends on the blocks
+    * alone. */
   bool trapsACorner (const std::vector<std::uint32_t>& move, StarScratch& s) const
   {
     if (!stays_buried_.empty () || !inside (move.front ()))
@@ -1040,8 +1053,11 @@ private:
         if (moved (c) || flipped_[c] || !labels_.oneGroup (tetrahedra_.vertices (c)))
           return false;
         for (int j = 0; j < 4; ++j)
-          if (inside_after (tetrahedra_.neighbour (c, j)))
+        {
+          const std::uint32_t across = tetrahedra_.neighbour (c, j);
+          if (across != OUTSIDE_HULL && (!within (across, s.lo, s.hi) || inside_after (across)))
             return true;
+        }
         return false;
       });
       if (!rescued)
