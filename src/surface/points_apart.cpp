@@ -87,40 +87,39 @@ pointsApart (const SimplicialComplex& complex, const std::vector<Point3>& positi
   // sample around a group: far outliers whose Delaunay neighbours are mostly each other are
   // judged again by the others, and one whose neighbours are all apart is apart, until no more
   // is.
+  std::vector<double> out (n, std::numeric_limits<double>::infinity ());
+  for (SimplexId e = 0; e < edges; ++e)
+  {
+    const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
+    for (const auto& [g, w] : {std::pair (group[a], b), std::pair (group[b], a)})
+      if (size[g] <= APART_CLUSTER && size[group[w]] > APART_CLUSTER)
+        out[g] = std::min (out[g], length (e));
+  }
+  // An object is never apart, so only the counts change from one round to the next.
   std::vector<std::uint8_t> group_apart (n, 0);
-  std::vector<double> out (n);
   std::vector<std::uint32_t> outside (n), denser (n), by_apart (n);
   for (bool more = true; more;)
   {
-    std::fill (out.begin (), out.end (), std::numeric_limits<double>::infinity ());
     std::fill (outside.begin (), outside.end (), 0u);
     std::fill (denser.begin (), denser.end (), 0u);
     std::fill (by_apart.begin (), by_apart.end (), 0u);
-    for (int pass = 0; pass < 2; ++pass)
-      for (SimplexId e = 0; e < edges; ++e)
-      {
-        const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
-        const std::uint32_t group_a = group[a], group_b = group[b];
-        if (group_a == group_b)
+    for (SimplexId e = 0; e < edges; ++e)
+    {
+      const std::uint32_t a = complex.vertex (1, e, 0), b = complex.vertex (1, e, 1);
+      const std::uint32_t group_a = group[a], group_b = group[b];
+      if (group_a == group_b)
+        continue;
+      for (const auto& [g, w] : {std::pair (group_a, b), std::pair (group_b, a)})
+        if (size[g] > APART_CLUSTER || group_apart[g])
           continue;
-        for (const auto& [g, w] : {std::pair (group_a, b), std::pair (group_b, a)})
+        else if (group_apart[group[w]])
+          ++by_apart[g];
+        else
         {
-          if (size[g] > APART_CLUSTER || group_apart[g])
-            continue;
-          if (group_apart[group[w]])
-            by_apart[g] += pass;
-          else if (pass == 0)
-          {
-            if (size[group[w]] > APART_CLUSTER)
-              out[g] = std::min (out[g], length (e));
-          }
-          else
-          {
-            ++outside[g];
-            denser[g] += size[group[w]] > APART_CLUSTER && APART_SPACINGS * nearest[w] < out[g];
-          }
+          ++outside[g];
+          denser[g] += size[group[w]] > APART_CLUSTER && APART_SPACINGS * nearest[w] < out[g];
         }
-      }
+    }
     more = false;
     for (std::uint32_t g = 0; g < n; ++g)
       if (size[g] > 0 && size[g] <= APART_CLUSTER && !group_apart[g] &&
