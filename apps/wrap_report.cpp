@@ -158,8 +158,9 @@ printSummary (std::ostream& out, const WrapStatistics& s)
       del[k] += s.simplices[k][c];
   out << "points:        " << s.points_input << " given, " << s.points_used << " used, " << s.points_skipped
       << " skipped (non-finite), " << s.points_duplicate << " duplicate, " << s.points_hidden << " hidden";
+  out << "; " << s.points_off_surface << " off the surface";
   if (s.points_apart > 0)
-    out << ", " << s.points_apart << " apart from all others (off the surface)";
+    out << " (" << s.points_apart << " apart from all others)";
   out << "\n"
       << "Del S:         dimension " << s.triangulation_dimension << ", " << del[0] << " vertices, " << del[1]
       << " edges, " << del[2] << " triangles, " << del[3] << " tetrahedra\n"

@@ -7,8 +7,8 @@ Seeded clouds 1 to CLOUDS (default 100): a unit sphere or a torus of radii 1 and
 from the centre. Right: every outlier is off the default surface and reported apart (docs/surface.md,
 "Points apart"), the surface is one closed, oriented 2-manifold of the shape's genus through at
 least 99% of the shape's points, and it is not the paper's W. Prints how many clouds are right and,
-for each of the others, what is wrong, with each unreported outlier's distance to the shape in its
-median spacings. Uses BUILD_DIR/apps/pcl_wrap.
+for each of the others, what is wrong, with each outlier not reported apart, its distance to the
+shape in its median spacings, and whether it is listed off the surface. Uses BUILD_DIR/apps/pcl_wrap.
 """
 import json
 import os
@@ -73,9 +73,11 @@ def main():
             if on_it:
                 wrong.append(f"outliers {on_it} on it")
             distances = cKDTree(shape).query(outliers)[0] / spacing
-            unreported = [f"{distances[i - n]:.0f}" for i in range(n, n + len(outliers)) if i not in s["apart"]]
-            if unreported:
-                wrong.append(f"outliers not reported apart, {', '.join(unreported)} spacings away")
+            not_apart = [i for i in range(n, n + len(outliers)) if i not in s["apart"]]
+            if not_apart:
+                listed = set(not_apart) <= set(s["off_surface"]) | on  # every point is on it or listed off
+                wrong.append(f"outliers not reported apart, {', '.join(f'{distances[i - n]:.0f}' for i in not_apart)}"
+                             f" spacings away ({'listed off the surface' if listed else 'NOT LISTED off the surface'})")
             if wrong:
                 others.append(f"seed {seed}: {'; '.join(wrong)}")
             else:

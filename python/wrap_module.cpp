@@ -125,6 +125,7 @@ compute (const Doubles& points, const py::object& weights_or_none, const WrapPar
   out["skipped"] = vector<std::int64_t> (result.skipped);
   out["hidden"] = vector<std::int64_t> (result.hidden);
   out["apart"] = vector<std::int64_t> (result.apart);
+  out["off_surface"] = vector<std::int64_t> (result.off_surface);
   out["copies"] = vector<std::int64_t> (result.copies);
   std::vector<std::int64_t> duplicates;
   for (const auto& [duplicate, kept] : result.duplicates)

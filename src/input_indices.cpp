@@ -62,6 +62,28 @@ InputIndices::complex (const SimplicialComplex& complex, const Classification& c
 }
 
 std::vector<PointIndex>
+InputIndices::pointsOff (const WrapSurface& surface, const std::vector<PointIndex>& copies,
+                         std::size_t input_points) const
+{
+  std::vector<std::uint8_t> on (input_points, 0);
+  const auto mark = [&] (PointIndex p) { on[p < input_points ? p : copies[p - input_points]] = 1; };
+  for (const auto& t : surface.triangles)
+    for (PointIndex p : t)
+      mark (p);
+  for (const auto& e : surface.dangling_edges)
+    for (PointIndex p : e)
+      mark (p);
+  for (PointIndex p : surface.isolated_vertices)
+    mark (p);
+  std::vector<PointIndex> off;
+  for (std::size_t v = 0; v < vertices_; ++v)
+    if (!on[of_vertex_[v]])
+      off.push_back (of_vertex_[v]);
+  std::sort (off.begin (), off.end ());
+  return off;
+}
+
+std::vector<PointIndex>
 InputIndices::sortedPoints (const std::vector<std::uint32_t>& vertices) const
 {
   std::vector<PointIndex> points;
@@ -76,6 +98,7 @@ InputIndices
 InputIndices::reindexed (const std::function<std::uint32_t (std::uint32_t)>& index) const
 {
   InputIndices out (of_vertex_);
+  out.vertices_ = vertices_;
   for (PointIndex& p : out.of_vertex_)
     p = index (p);
   return out;

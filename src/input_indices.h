@@ -25,7 +25,9 @@ class InputIndices
 {
 public:
   InputIndices () = default;
-  explicit InputIndices (std::vector<PointIndex> of_vertex) : of_vertex_ (std::move (of_vertex)) {}
+  explicit InputIndices (std::vector<PointIndex> of_vertex)
+    : of_vertex_ (std::move (of_vertex)), vertices_ (of_vertex_.size ())
+  {}
 
   PointIndex operator() (std::uint32_t vertex) const { return of_vertex_[vertex]; }
   std::size_t size () const { return of_vertex_.size (); }
@@ -39,6 +41,11 @@ public:
   /** \brief \a w in point indices. */
   WrapSurface surface (const Boundary& w) const;
 
+  /** \brief The points of the vertices (not the copies) that no simplex of \a surface has, in
+    * ascending order. \a surface numbers copy k \a input_points + k, a copy of \a copies[k]. */
+  std::vector<PointIndex> pointsOff (const WrapSurface& surface, const std::vector<PointIndex>& copies,
+                                     std::size_t input_points) const;
+
   /** \brief The points that \a vertices are, in ascending order. */
   std::vector<PointIndex> sortedPoints (const std::vector<std::uint32_t>& vertices) const;
 
@@ -51,6 +58,7 @@ public:
 
 private:
   std::vector<PointIndex> of_vertex_;
+  std::size_t vertices_ = 0; ///< the vertices; the copies that takeSplit() appends follow them
 };
 
 } // namespace pcl_wrap::detail

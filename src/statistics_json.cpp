@@ -27,10 +27,13 @@ statisticsJson (const WrapResult& result)
   };
   out << std::setprecision (9) << "{\"points\":{\"input\":" << s.points_input << ",\"used\":" << s.points_used
       << ",\"skipped\":" << s.points_skipped << ",\"duplicate\":" << s.points_duplicate
-      << ",\"hidden\":" << s.points_hidden << ",\"apart\":" << s.points_apart << "},\"hidden\":";
+      << ",\"hidden\":" << s.points_hidden << ",\"apart\":" << s.points_apart
+      << ",\"off_surface\":" << s.points_off_surface << "},\"hidden\":";
   writeList (out, result.hidden);
   out << ",\"apart\":";
   writeList (out, result.apart);
+  out << ",\"off_surface\":";
+  writeList (out, result.off_surface);
   out << ",\"triangulation_dimension\":" << s.triangulation_dimension << ",\"simplices\":{";
   for (int k = 0; k <= 3; ++k)
   {

@@ -11,6 +11,7 @@
 #include "wrap_report.h"
 
 #include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/statistics_json.h>
 
 #include <gtest/gtest.h>
 
@@ -315,6 +316,43 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnClosedShapes)
   for (const Point3& p : test::torusSample (3000, 16))
     points.push_back ({p[0] + 3, p[1], p[2]});
   expectIdenticalSurface (writeCloud ("apart_surface", points), {2, 4});
+}
+
+/** The "points" of a --stats-json and the lists after it (hidden, apart, off_surface). */
+std::string
+pointsOfStatistics (const std::string& json)
+{
+  return json.substr (0, json.find (",\"triangulation_dimension\""));
+}
+
+TEST (Mpi, PointsLeftOffAreTheSingleProcesss)
+{
+  // A volume (most points inside), a duplicate and a far outlier.
+  std::vector<Point3> points = test::cubeSample (4000, 21);
+  points.push_back (points[7]);
+  points.push_back ({30.0, 0.0, 0.0});
+  const fs::path cloud = writeCloud ("points_off", points), json = scratch () / "points_off.json",
+                 log = scratch () / "points_off.log";
+  const apps::PointFile file = apps::readPointFile (cloud.string (), "", false);
+  for (const bool raw : {false, true})
+  {
+    WrapParameters parameters;
+    parameters.output = raw ? Output::raw : Output::surface;
+    const WrapResult single = computeWrap (file.points, file.weights, parameters);
+    ASSERT_GT (single.off_surface.size (), 1000u);
+    EXPECT_EQ (single.apart, raw ? std::vector<PointIndex>{} : std::vector<PointIndex>{4001});
+    for (int ranks : {1, 3})
+    {
+      ASSERT_EQ (runMpi (ranks,
+                         cloud.string () + " " + (scratch () / "o.ply").string () + (raw ? " --raw" : "") +
+                             " --quiet --stats-json " + json.string (),
+                         log),
+                 0)
+          << readFile (log);
+      EXPECT_EQ (pointsOfStatistics (readFile (json)), pointsOfStatistics (statisticsJson (single)))
+          << ranks << " ranks" << (raw ? ", raw" : "");
+    }
+  }
 }
 
 TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnNoiseOfASpacing)

@@ -15,11 +15,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
 #include <limits>
 #include <set>
+#include <vector>
 
 namespace pcl_wrap::test
 {
@@ -243,6 +245,38 @@ TEST (PclWrap, DepthImageKeepsItsLayoutAndFacesTheSensor)
 /** The manifold option and a region through the PCL class: copies of split points follow the
   * input cloud in the output cloud (an organised cloud then becomes one row), with their fields,
   * and the polygons form a closed 2-manifold; with indices, copies still follow the whole cloud. */
+TEST (PclWrap, PointsLeftOffIndexTheCloud)
+{
+  // Points in a cube (many inside the surface) and a far outlier, every third selected, in an
+  // order that is not the cloud's.
+  auto sample = cubeSample (3000, 4);
+  sample[2700] = {50.0, 50.0, 50.0};
+  auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>> ();
+  for (const auto& p : sample)
+    cloud->push_back (pcl::PointXYZ (float (p[0]), float (p[1]), float (p[2])));
+  auto indices = pcl::make_shared<pcl::Indices> ();
+  for (int i = int (cloud->size ()) - 3; i >= 0; i -= 3)
+    indices->push_back (i);
+
+  Wrap<pcl::PointXYZ> wrap;
+  wrap.setInputCloud (cloud);
+  wrap.setIndices (indices);
+  pcl::PolygonMesh mesh;
+  wrap.reconstruct (mesh);
+  const WrapResult& r = wrap.getResult ();
+  EXPECT_EQ (r.apart, std::vector<PointIndex>{2700});
+  EXPECT_TRUE (std::is_sorted (r.off_surface.begin (), r.off_surface.end ()));
+  std::set<std::uint32_t> on;
+  for (const auto& t : trianglesOf (mesh.polygons))
+    on.insert (t.begin (), t.end ());
+  ASSERT_GT (r.off_surface.size (), indices->size () / 4) << "a volume: many points inside";
+  // The selected points, each on the mesh or off it, and no other.
+  std::set<std::uint32_t> all = on;
+  for (PointIndex p : r.off_surface)
+    EXPECT_TRUE (all.insert (p).second) << "point " << p << " both on and off the mesh";
+  EXPECT_EQ (all, std::set<std::uint32_t> (indices->begin (), indices->end ()));
+}
+
 TEST (PclWrap, ManifoldCopiesFollowTheInputCloud)
 {
   const auto sample = torusSample (200, 1); // sealed: pinch edges

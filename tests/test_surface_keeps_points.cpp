@@ -10,10 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace pcl_wrap::test
 {
@@ -107,6 +110,61 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
     EXPECT_GE (pointsOnSurface (r, points.size ()).size (), on_w);
     expectClosedOrOneSheet (r);
   }
+}
+
+/** Each of the \a n points given is on \a r's output (a vertex of one of its simplices, itself or
+  * as a copy) or in exactly one of the lists that say where it went: off the surface, skipped,
+  * hidden, a duplicate. */
+void
+expectEveryPointAccountedFor (const WrapResult& r, std::size_t n)
+{
+  std::vector<int> places (n, 0);
+  std::set<PointIndex> on = pointsOnSurface (r, n);
+  for (const auto& e : r.surface.dangling_edges)
+    on.insert (e.begin (), e.end ());
+  on.insert (r.surface.isolated_vertices.begin (), r.surface.isolated_vertices.end ());
+  for (PointIndex p : on)
+    ++places[p];
+  for (const std::vector<PointIndex>* list : {&r.off_surface, &r.skipped, &r.hidden})
+    for (PointIndex p : *list)
+      ++places[p];
+  for (const auto& d : r.duplicates)
+    ++places[d.first];
+  for (std::size_t p = 0; p < n; ++p)
+    ASSERT_EQ (places[p], 1) << "point " << p << " is in " << places[p] << " places";
+  EXPECT_TRUE (std::is_sorted (r.off_surface.begin (), r.off_surface.end ()));
+  EXPECT_TRUE (std::includes (r.off_surface.begin (), r.off_surface.end (), r.apart.begin (), r.apart.end ()));
+  EXPECT_EQ (r.statistics.points_off_surface, r.off_surface.size ());
+}
+
+TEST (SurfaceKeepsPoints, EveryPointIsOnTheSurfaceOrReportedOff)
+{
+  std::vector<NamedSample> clouds = samples ();
+  // NaNs, duplicates and two far outliers around a sphere.
+  std::vector<Point3> mixed = sphereSample (2000, 3, 0.0);
+  mixed[10] = {std::numeric_limits<double>::quiet_NaN (), 0.0, 0.0};
+  mixed.push_back (mixed[20]);
+  mixed.push_back ({40.0, 0.0, 0.0});
+  mixed.push_back ({0.0, -60.0, 0.0});
+  clouds.push_back ({"sphere with a NaN, a duplicate and two outliers", mixed});
+  WrapParameters closed, raw = rawOutput (), raw_manifold = rawOutput ();
+  closed.output = Output::closed;
+  raw_manifold.manifold = true;
+  std::size_t off_default = 0, off_raw = 0;
+  for (const auto& [name, points] : clouds)
+    for (const WrapParameters& parameters : {WrapParameters{}, closed, raw, raw_manifold})
+    {
+      SCOPED_TRACE (name + ", output " + std::to_string (static_cast<int> (parameters.output)) +
+                    (parameters.manifold ? ", manifold" : ""));
+      const WrapResult r = computeWrap (points, parameters);
+      expectEveryPointAccountedFor (r, points.size ());
+      (parameters.output == Output::raw ? off_raw : off_default) += r.off_surface.size ();
+      if (name == clouds.back ().name && parameters.output != Output::raw)
+        EXPECT_EQ (r.apart, (std::vector<PointIndex>{2001, 2002})) << "the outliers, off the surface";
+    }
+  // The volumes leave points inside: the lists are not empty.
+  EXPECT_GT (off_default, 0u);
+  EXPECT_GT (off_raw, 0u);
 }
 
 TEST (SurfaceKeepsPoints, TinyCloudsGiveAClosedManifoldThroughAllOfWsPoints)

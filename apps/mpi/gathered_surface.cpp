@@ -215,4 +215,23 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   clock.stageDone ("output");
 }
 
+void
+recordPointsOff (std::size_t input_points, WrapResult& result)
+{
+  std::vector<std::uint8_t> used (input_points, 1);
+  for (PointIndex p : result.skipped)
+    used[p] = 0;
+  for (const auto& d : result.duplicates)
+    used[d.first] = 0;
+  for (PointIndex p : result.hidden)
+    used[p] = 0;
+  std::vector<PointIndex> points;
+  for (PointIndex p = 0; p < input_points; ++p)
+    if (used[p])
+      points.push_back (p);
+  result.off_surface =
+      detail::InputIndices (std::move (points)).pointsOff (result.surface, result.copies, input_points);
+  result.statistics.points_off_surface = result.off_surface.size ();
+}
+
 } // namespace pcl_wrap::mpi

@@ -307,6 +307,7 @@ run (const Options& o, MPI_Comm comm)
   const apps::PointFile points = source.readAll ();
   if (on_root)
     mpi::surfaceOnRoot (points, result.hidden, std::move (solid), sheets, result.w, o.parameters, result, clock);
+  mpi::recordPointsOff (points.points.size (), result);
   stats.w_triangles = result.surface.triangles.size ();
   stats.w_dangling_edges = result.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result.surface.isolated_vertices.size ();

@@ -215,8 +215,9 @@ WrapPublisher::onCloud (const sensor_msgs::PointCloud2::ConstPtr& msg)
   pcl::PolygonMesh mesh;
   wrap.reconstruct (mesh);
   const auto& stats = wrap.getStatistics ();
-  ROS_INFO_STREAM ("pcl_wrap: " << msg->width * msg->height << " points (" << stats.points_used << " used) -> "
-                                << mesh.polygons.size () << " triangles in " << stats.total_seconds << " s");
+  ROS_INFO_STREAM ("pcl_wrap: " << msg->width * msg->height << " points (" << stats.points_used << " used, "
+                                << stats.points_off_surface << " off the surface) -> " << mesh.polygons.size ()
+                                << " triangles in " << stats.total_seconds << " s");
 
   // The mesh's vertices are the input's points with every field they have, then the copies.
   const std::vector<pcl_wrap::PointIndex>& copies = wrap.getResult ().copies;

@@ -11,8 +11,8 @@ namespace pcl_wrap
 
 /** \brief The statistics of \a result as one JSON object, the same keys in every interface (the
   * CLI's --stats-json, Python's WrapResult.statistics):
-  * {"points": {"input", "used", "skipped", "duplicate", "hidden", "apart"}, "hidden": [indices],
-  *  "apart": [indices],
+  * {"points": {"input", "used", "skipped", "duplicate", "hidden", "apart", "off_surface"},
+  *  "hidden": [indices], "apart": [indices], "off_surface": [indices],
   *  "triangulation_dimension", "simplices": {"0".."3": {class: count}}, "x_simplices": {"0".."3"},
   *  "spacing", "deletion": {"delta" (null: none), "largest_sinks", "sinks", "deleted", "enclosed",
   *  "not_principal"}, "manifold": {"pinch_edges_split", "pinch_vertices_split",

@@ -44,6 +44,9 @@ class WrapResult:
     duplicates        (d, 2): a row at the same position as a kept row, and that row
     hidden            weighted input: points whose power cell is empty (never on the surface)
     apart             default surface: points apart from all others (outliers), left off it
+    off_surface       every input row used that the surface does not pass through (apart
+                      included); each row is on the surface, off it, skipped, hidden or a
+                      duplicate
     copies            the input point each appended vertex copies
     dangling_edges    raw output: (e, 2) edges of X with no triangle
     isolated_vertices raw output: vertices of X with no edge
@@ -70,6 +73,7 @@ class WrapResult:
         self.duplicates = fields["duplicates"]
         self.hidden = fields["hidden"]
         self.apart = fields["apart"]
+        self.off_surface = fields["off_surface"]
         self.copies = copies
         self.dangling_edges = fields["dangling_edges"]
         self.isolated_vertices = fields["isolated_vertices"]

@@ -104,6 +104,18 @@ class Input(unittest.TestCase):
         np.testing.assert_array_equal(result.hidden, [len(points) - 1])
         np.testing.assert_array_equal(pcl_wrap.wrap(points, weights.astype(np.float32)).hidden, [len(points) - 1])
 
+    def test_points_inside_a_volume_are_reported_off_the_surface(self):
+        points = np.random.default_rng(3).uniform(-1, 1, (2000, 3))
+        points[1500] = np.nan
+        result = pcl_wrap.wrap(points)
+        source = np.concatenate([np.arange(len(points)), result.copies]).astype(np.int64)
+        on = np.unique(source[result.triangles])  # a copy counts as its point
+        self.assertGreater(len(result.off_surface), 300)  # the inside of a cube
+        self.assertEqual(result.statistics["points"]["off_surface"], len(result.off_surface))
+        # Each row: on the surface, off it or skipped, and only one of them.
+        every = np.concatenate([on, result.off_surface, result.skipped])
+        np.testing.assert_array_equal(np.sort(every), np.arange(len(points)))
+
     def test_a_non_finite_weight_skips_its_point(self):
         points = sphere(300)
         weights = np.zeros(300)

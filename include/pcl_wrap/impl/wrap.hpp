@@ -68,14 +68,16 @@ Wrap<PointInT>::computeResult ()
   const auto to_cloud = [&] (PointIndex k) {
     return static_cast<PointIndex> (k < indices.size () ? indices[k] : input_->size () + (k - indices.size ()));
   };
-  for (auto& t : result_.surface.triangles)
-    for (auto& v : t)
+  for (WrapSurface* surface : {&result_.surface, &result_.w})
+  {
+    for (auto& t : surface->triangles)
+      for (auto& v : t)
+        v = to_cloud (v);
+    for (auto& e : surface->dangling_edges)
+      e = {std::min (to_cloud (e[0]), to_cloud (e[1])), std::max (to_cloud (e[0]), to_cloud (e[1]))};
+    for (auto& v : surface->isolated_vertices)
       v = to_cloud (v);
-  for (auto& e : result_.surface.dangling_edges)
-    for (auto& v : e)
-      v = to_cloud (v);
-  for (auto& v : result_.surface.isolated_vertices)
-    v = to_cloud (v);
+  }
   for (auto& list : result_.complex)
     for (auto& v : list.vertices)
       v = to_cloud (v);
@@ -85,6 +87,12 @@ Wrap<PointInT>::computeResult ()
     v = to_cloud (v);
   for (auto& v : result_.copies)
     v = to_cloud (v);
+  for (std::vector<PointIndex>* list : {&result_.apart, &result_.off_surface})
+  {
+    for (auto& v : *list)
+      v = to_cloud (v);
+    std::sort (list->begin (), list->end ()); // ascending in the cloud, whatever order the indices have
+  }
   for (auto& d : result_.duplicates)
     d = {to_cloud (d.first), to_cloud (d.second)};
   if (!result_.filtration.empty ())
