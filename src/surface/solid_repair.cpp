@@ -139,6 +139,7 @@ public:
     if (euler_change_)
       for (std::uint32_t t : joined)
         euler_change_->changedSide (t);
+    const std::vector<std::uint8_t> before_handles = labels_.inside;
     // Small handles, cut. A volume's solid, X's tetrahedra, has them too: X is contractible, but
     // where a sheet of its triangles spans a tunnel of its tetrahedra, the solid's surface goes
     // round that tunnel. The surface is kept while it is the solid's.
@@ -175,6 +176,18 @@ public:
     done.flipped += joined.size ();
     const std::size_t flipped_before = done.flipped;
     mend (tetrahedra_.verticesOf (joined), done);
+    // The cuts and their mending leave voids as the first mending does: filled, then mended at
+    // their corners (the void of one tetrahedron that touches the outside at a vertex).
+    const std::vector<std::uint32_t> late =
+        fillUnsampledVoidsNear (tetrahedra_, labels_, flipped_, changedSince (before_handles));
+    if (!late.empty ())
+    {
+      done.flipped += late.size ();
+      for (std::uint32_t t : late)
+        if (euler_change_)
+          euler_change_->changedSide (t);
+      mend (tetrahedra_.verticesOf (late), done);
+    }
     if (done.flipped == flipped_before)
       done.surface = std::move (surface);
     for (std::uint32_t v = 0; v < unmended_.size (); ++v)
