@@ -68,7 +68,7 @@ done
 grep -q from_rostopic "$work/frame.txt" || fail "no mesh for the cloud from rostopic pub: $(cat "$work/frame.txt")"
 
 # One log line per cloud, in the ROS log (rosout).
-grep -rEq "pcl_wrap: [0-9]+ points \([0-9]+ used\) -> [0-9]+ triangles in" "$work/log" || fail "no log line per cloud"
+grep -rEq "pcl_wrap: [0-9]+ points \([0-9]+ used, [0-9]+ off the surface\) -> [0-9]+ triangles in" "$work/log" || fail "no log line per cloud"
 
 # Bad parameters: a clear message naming the parameter; the node exits with 1.
 node="$work/prefix/lib/pcl_wrap/pcl_wrap_node"
