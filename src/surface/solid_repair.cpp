@@ -944,6 +944,20 @@ private:
 
   bool inside (std::uint32_t t) const { return t != OUTSIDE_HULL && labels_.inside[t]; }
 
+  /** May the mending of a buried or floating point move \a t across to bring it on (mendVertex())?
+    * Not if it moved before or spans two groups of the sample; yes if a neighbour of it is on the
+    * other side (\a other_side, of a tetrahedron id or OUTSIDE_HULL). */
+  template <class OtherSide>
+  bool bringsOn (std::uint32_t t, const OtherSide& other_side) const
+  {
+    if (flipped_[t] || !labels_.oneGroup (tetrahedra_.vertices (t)))
+      return false;
+    for (int i = 0; i < 4; ++i)
+      if (other_side (tetrahedra_.neighbour (t, i)))
+        return true;
+    return false;
+  }
+
   /** In a volume, was \a v buried from the start (and so stays inside)? */
   bool staysBuried (std::uint32_t v) const { return !stays_buried_.empty () && stays_buried_[v]; }
 
@@ -1041,10 +1055,9 @@ private:
 
   /** Would moving out \a move, inside tetrahedra of the star that \a s holds, leave a corner of
     * it other than the star's vertex floating (its star all outside) with no tetrahedron of its
-    * star that the mending of a floating point could move in (mendVertex(): one unmoved, within
-    * one group, next to an inside one)? A point in a flat pocket of four tetrahedra whose
-    * neighbours across the pocket are all outside is so trapped once its last inside tetrahedron
-    * moves out. (In a volume, whose solid is X's, a pair of tetrahedra may move to bring a point
+    * star that the mending of a floating point could move in (bringsOn(), next to an inside
+    * one)? A point in a flat pocket of four tetrahedra whose neighbours across the pocket are all
+    * outside is so trapped once its last inside tetrahedron moves out. (In a volume, whose solid is X's, a pair of tetrahedra may move to bring a point
     * on.) A tetrahedron across a corner's star with a vertex outside the block being mended may be
     * moving on another thread: it counts as a way on, so that the answer depends on the blocks
     * alone. */
@@ -1063,15 +1076,9 @@ private:
       if (std::any_of (star.begin (), star.end (), inside_after))
         continue; // not floating
       const bool rescued = std::any_of (star.begin (), star.end (), [&] (std::uint32_t c) {
-        if (moved (c) || flipped_[c] || !labels_.oneGroup (tetrahedra_.vertices (c)))
-          return false;
-        for (int j = 0; j < 4; ++j)
-        {
-          const std::uint32_t across = tetrahedra_.neighbour (c, j);
-          if (across != OUTSIDE_HULL && (!within (across, s.lo, s.hi) || inside_after (across)))
-            return true;
-        }
-        return false;
+        return !moved (c) && bringsOn (c, [&] (std::uint32_t across) {
+          return across != OUTSIDE_HULL && (!within (across, s.lo, s.hi) || inside_after (across));
+        });
       });
       if (!rescued)
         return true;
@@ -1201,13 +1208,11 @@ private:
       // in a volume, when none does (a point on a fin of X), the weakest such pair of a star
       // tetrahedron and its neighbour.
       const bool buried = parts.count[0] == 0;
+      const auto other_side = [&] (std::uint32_t u) { return buried ? !inside (u) : inside (u); };
       const auto touches = [&] (std::uint32_t t) {
         for (int i = 0; i < 4; ++i)
-        {
-          const std::uint32_t u = tetrahedra_.neighbour (t, i);
-          if (buried ? !inside (u) : inside (u))
+          if (other_side (tetrahedra_.neighbour (t, i)))
             return true;
-        }
         return false;
       };
       // The weakest that makes no handle, if any; in a volume, whose inside is X's, the weakest.
@@ -1216,7 +1221,7 @@ private:
       std::vector<std::pair<std::uint32_t, double>> touching; // (tetrahedron, its longest edge)
       double shortest = std::numeric_limits<double>::infinity ();
       for (std::uint32_t t : s.star.tetrahedra ())
-        if (!flipped_[t] && touches (t) && labels_.oneGroup (tetrahedra_.vertices (t)))
+        if (bringsOn (t, other_side))
         {
           touching.emplace_back (t, longestEdge (tetrahedra_, positions_, t));
           shortest = std::min (shortest, touching.back ().second);
