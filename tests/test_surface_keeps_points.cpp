@@ -165,6 +165,14 @@ TEST (SurfaceKeepsPoints, EveryPointIsOnTheSurfaceOrReportedOff)
   // The volumes leave points inside: the lists are not empty.
   EXPECT_GT (off_default, 0u);
   EXPECT_GT (off_raw, 0u);
+  // Weights: a point whose power cell is empty is hidden, not off the surface.
+  std::vector<Point3> weighted = sphereSample (800, 4, 0.0);
+  weighted.push_back ({0.0, 0.0, 0.0});
+  std::vector<double> weights (weighted.size (), 0.0);
+  weights.back () = -10.0;
+  const WrapResult r = computeWrap (weighted, weights);
+  EXPECT_EQ (r.hidden, std::vector<PointIndex>{800});
+  expectEveryPointAccountedFor (r, weighted.size ());
 }
 
 TEST (SurfaceKeepsPoints, TinyCloudsGiveAClosedManifoldThroughAllOfWsPoints)
