@@ -11,8 +11,9 @@ with --closed. Checks that every run succeeds and that its surface is what docs/
 promises: a closed, oriented 2-manifold (every edge on two triangles, once each way, every
 vertex's triangles one fan), or for a single layer by default one oriented sheet, through at
 least as many input points as the paper's W (--raw), but for the points apart from all others that
-it leaves off (outliers); the last column counts the surfaces through fewer. A Markdown table per family; exits with status 1 if a run fails or a surface breaks a
-promise. Uses BUILD_DIR/apps/pcl_wrap.
+it leaves off (outliers), and with every other point it leaves off listed ("off_surface"); the
+last column counts the surfaces through fewer. A Markdown table per family; exits with status 1
+if a run fails or a surface breaks a promise. Uses BUILD_DIR/apps/pcl_wrap.
 """
 import json
 import os
@@ -129,6 +130,10 @@ def run(build, points, extra, work):
     problem = None
     if s["triangulation_dimension"] == 3 and len(tris):
         problem = broken(vertices, tris, s["manifold"]["single_layer"] and "--closed" not in extra)
+    # Every point given is on the surface, listed off it, or skipped, a duplicate or hidden.
+    p, off = s["points"], set(s["off_surface"])
+    if not problem and (on & off or len(on) + len(off) + p["skipped"] + p["duplicate"] + p["hidden"] != p["input"]):
+        problem = "points unaccounted for: %d on, %d off, of %d" % (len(on), len(off), p["input"])
     return problem, len(on) < len(on_w)
 
 

@@ -70,11 +70,6 @@ InputIndices::pointsOff (const WrapSurface& surface, const std::vector<PointInde
   for (const auto& t : surface.triangles)
     for (PointIndex p : t)
       mark (p);
-  for (const auto& e : surface.dangling_edges)
-    for (PointIndex p : e)
-      mark (p);
-  for (PointIndex p : surface.isolated_vertices)
-    mark (p);
   std::vector<PointIndex> off;
   for (std::size_t v = 0; v < vertices_; ++v)
     if (!on[of_vertex_[v]])

@@ -41,7 +41,7 @@ public:
   /** \brief \a w in point indices. */
   WrapSurface surface (const Boundary& w) const;
 
-  /** \brief The points of the vertices (not the copies) that no simplex of \a surface has, in
+  /** \brief The points of the vertices (not the copies) that no triangle of \a surface has, in
     * ascending order. \a surface numbers copy k \a input_points + k, a copy of \a copies[k]. */
   std::vector<PointIndex> pointsOff (const WrapSurface& surface, const std::vector<PointIndex>& copies,
                                      std::size_t input_points) const;

@@ -112,18 +112,14 @@ TEST (SurfaceKeepsPoints, NeverFewerPointsOnItThanOnThePapersW)
   }
 }
 
-/** Each of the \a n points given is on \a r's output (a vertex of one of its simplices, itself or
-  * as a copy) or in exactly one of the lists that say where it went: off the surface, skipped,
-  * hidden, a duplicate. */
+/** Each of the \a n points given is on a triangle of \a r's output (itself or as a copy), as a
+  * mesh shows it, or in exactly one of the lists that say where it went: off the surface,
+  * skipped, hidden, a duplicate. */
 void
 expectEveryPointAccountedFor (const WrapResult& r, std::size_t n)
 {
   std::vector<int> places (n, 0);
-  std::set<PointIndex> on = pointsOnSurface (r, n);
-  for (const auto& e : r.surface.dangling_edges)
-    on.insert (e.begin (), e.end ());
-  on.insert (r.surface.isolated_vertices.begin (), r.surface.isolated_vertices.end ());
-  for (PointIndex p : on)
+  for (PointIndex p : pointsOnSurface (r, n))
     ++places[p];
   for (const std::vector<PointIndex>* list : {&r.off_surface, &r.skipped, &r.hidden})
     for (PointIndex p : *list)

@@ -49,8 +49,8 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
                const WrapParameters& parameters, WrapResult& result, detail::StageClock& clock);
 
 /** \brief Sets WrapResult::off_surface of \a result, the output over \a input_points points, as
-  * one process does: every point neither skipped, nor a duplicate, nor hidden, that no simplex of
-  * its surface has. */
+  * one process does: every point neither skipped, nor a duplicate, nor hidden, that no triangle
+  * of its surface has. */
 void
 recordPointsOff (std::size_t input_points, WrapResult& result);
 

@@ -106,7 +106,7 @@ struct WrapStatistics
   std::size_t points_duplicate = 0; ///< same position as a kept point
   std::size_t points_hidden = 0;    ///< empty power cell (weighted input only)
   std::size_t points_apart = 0;     ///< the default surface: apart from all others, left off it
-  std::size_t points_off_surface = 0; ///< used, and on no simplex of the output (WrapResult::off_surface)
+  std::size_t points_off_surface = 0; ///< used, and on no triangle of the output (WrapResult::off_surface)
   int triangulation_dimension = -1; ///< -1 (no point), 0, 1, 2 or 3
 
   /** \brief Simplices of Del S per dimension and class: [dimension][class]. */
@@ -181,10 +181,11 @@ struct WrapResult
     * more than 16 times nearer their own nearest points), which it leaves off, where a closed
     * surface through them would be a spike (docs/surface.md, "Points apart"). */
   std::vector<PointIndex> apart;
-  /** \brief Every point used (a vertex of Del S) that no simplex of \a surface has, itself or
+  /** \brief Every point used (a vertex of Del S) that no triangle of \a surface has, itself or
     * as a copy, in ascending order: the points apart, points inside a volume, points a surface
-    * leaves inside or outside its solid. Each point given is on the surface or in exactly one of
-    * off_surface, skipped, hidden and the duplicates' first indices. */
+    * leaves inside or outside its solid, and points on a dangling edge or isolated vertex of W
+    * alone, which no mesh carries. Each point given is on a triangle of the surface or in exactly
+    * one of off_surface, skipped, hidden and the duplicates' first indices. */
   std::vector<PointIndex> off_surface;
   /** \brief The points copied to split the output where it touches itself (the default surface,
     * or the raw output with WrapParameters::manifold). Point index n + k (n = the number of input points) in
