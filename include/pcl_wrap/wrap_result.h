@@ -148,7 +148,8 @@ struct WrapStatistics
     * closed two-sided shell, the points copied per side (Output::closed). */
   bool single_layer = false;
   /** \brief With single_layer and Output::closed: Delaunay triangles and tetrahedra added to tie pieces of the shell
-    * that the split separated at a vertex to the rest. */
+    * that the split separated at a vertex to the rest, or to bring on a point that X holds by a
+    * dangling edge alone. */
   std::size_t bridge_simplices = 0;
 
   std::size_t w_triangles = 0;

@@ -5,6 +5,7 @@
 #include "surface/shell_joins.h"
 #include "surface/shell_pieces.h"
 #include "surface/shell_ties.h"
+#include "util/distance.h"
 #include "util/parallel_for_each.h"
 
 #include <algorithm>
@@ -58,6 +59,72 @@ verticesOn (const std::vector<std::array<std::uint32_t, 3>>& triangles)
   return static_cast<std::size_t> (std::unique (v.begin (), v.end ()) - v.begin ());
 }
 
+namespace
+{
+
+/** The Delaunay tetrahedra that bring onto X's boundary the points on none of its triangles that
+  * a tetrahedron outside X can reach (a point that X holds by a dangling edge alone): per such
+  * point v, of the tetrahedra at it whose facet opposite v is a triangle of X's boundary (on fewer
+  * than two of X's tetrahedra), the one whose longest edge is shortest. Each is a tent over that
+  * triangle: glued to the shell along it, a bump on the side where it stands, not a piece of its
+  * own. */
+std::vector<Simplex>
+tentsToLonePoints (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const Subcomplex& x)
+{
+  const SimplicialComplex& complex = tetrahedra.complex ();
+  const auto on_boundary = [&] (SimplexId f) { return x.contains ({2, f}) && x.cofaceCount ({2, f}) < 2; };
+  std::vector<std::uint8_t> on (complex.numVertices (), 0);
+  for (SimplexId f = 0; f < complex.size (2); ++f)
+    if (on_boundary (f))
+      for (int i = 0; i < 3; ++i)
+        on[complex.vertices (2, f)[i]] = 1;
+  std::vector<Simplex> tents;
+  Star star;
+  for (std::uint32_t v = 0; v < complex.numVertices (); ++v)
+  {
+    if (on[v])
+      continue;
+    tetrahedra.gatherStar (v, star);
+    std::uint32_t best = NO_TETRAHEDRON;
+    double shortest = 0.0;
+    for (std::uint32_t t : star.tetrahedra ())
+    {
+      const std::uint32_t* u = complex.vertices (3, t);
+      const int i = static_cast<int> (std::find (u, u + 4, v) - u);
+      if (x.contains ({3, t}) || !on_boundary (complex.facet (3, t, i).id))
+        continue;
+      double longest = 0.0;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          longest = std::max (longest, squaredDistance (positions[u[a]], positions[u[b]]));
+      if (best == NO_TETRAHEDRON || longest < shortest)
+      {
+        best = t;
+        shortest = longest;
+      }
+    }
+    if (best != NO_TETRAHEDRON)
+      tents.push_back ({3, best});
+  }
+  return tents;
+}
+
+/** \a members with the simplices \a added and all their faces. */
+std::array<std::vector<std::uint8_t>, 4>
+withFaces (const SimplicialComplex& complex, std::array<std::vector<std::uint8_t>, 4> members,
+           const std::vector<Simplex>& added)
+{
+  for (const Simplex s : added)
+    for (unsigned mask = 1; mask < (1u << (s.dim + 1)); ++mask)
+    {
+      const Simplex g = complex.face (s.dim, s.id, mask);
+      members[g.dim][g.id] = 1;
+    }
+  return members;
+}
+
+} // namespace
+
 TwoSidedShell
 twoSidedShell (const Tetrahedra& tetrahedra, const std::vector<Point3>& positions, const Subcomplex& x)
 {
@@ -69,6 +136,10 @@ twoSidedShell (const Tetrahedra& tetrahedra, const std::vector<Point3>& position
     for (SimplexId s = 0; s < members[k].size (); ++s)
       members[k][s] = x.contains ({k, s});
   }
+  // A point that X holds by a dangling edge alone would be on no triangle of the shell: a tent
+  // brings it on.
+  const std::vector<Simplex> tents = tentsToLonePoints (tetrahedra, positions, x);
+  members = withFaces (complex, std::move (members), tents);
   const auto shellOf = [&] (const std::array<std::vector<std::uint8_t>, 4>& m) {
     const Subcomplex k (complex, m);
     TwoSidedShell out;
@@ -77,6 +148,7 @@ twoSidedShell (const Tetrahedra& tetrahedra, const std::vector<Point3>& position
     return out;
   };
   TwoSidedShell shell = shellOf (members);
+  shell.bridges = tents.size ();
   ShellTopology now = topologyOf (shell.split.triangles);
   while (now.pieces > 1)
   {
@@ -85,13 +157,7 @@ twoSidedShell (const Tetrahedra& tetrahedra, const std::vector<Point3>& position
                  added.end ());
     if (added.empty ())
       break;
-    std::array<std::vector<std::uint8_t>, 4> more = members;
-    for (const Simplex s : added)
-      for (unsigned mask = 1; mask < (1u << (s.dim + 1)); ++mask)
-      {
-        const Simplex g = complex.face (s.dim, s.id, mask);
-        more[g.dim][g.id] = 1;
-      }
+    std::array<std::vector<std::uint8_t>, 4> more = withFaces (complex, members, added);
     TwoSidedShell tied = shellOf (more);
     const ShellTopology then = topologyOf (tied.split.triangles);
     // A round is kept when it leaves fewer pieces and no new handle; each kept round adds

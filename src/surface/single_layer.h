@@ -59,13 +59,14 @@ struct TwoSidedShell
 {
   Boundary w;           ///< the boundary of X and the bridges
   ManifoldSplit split;  ///< w split where it touches itself, sheets once per side
-  std::size_t bridges = 0; ///< Delaunay simplices added to tie pieces to the rest
+  std::size_t bridges = 0; ///< Delaunay simplices added: tents to points on no triangle, ties of pieces
 };
 
 /** \brief X's boundary, split into a closed 2-manifold (a sheet once per side, points copied per
   * side), with fewer pieces than the split alone gives. The split separates pieces of X that
   * meet at a single vertex, or that it cannot keep joined along an edge (a triangle hanging from
-  * the rim of a scan), which come out as closed pieces of their own. In rounds, each is tied to
+  * the rim of a scan), which come out as closed pieces of their own. First, a point that X holds
+  * by a dangling edge alone gets a tent (tentsToLonePoints()). In rounds, each piece is tied to
   * another at a vertex they share by Delaunay simplices around it (the tetrahedra around a shared
   * edge, or the triangles around the vertex, whose largest is as small as can be), none longer
   * than the triangles they join nor meeting the shell along another edge; a round is kept only
