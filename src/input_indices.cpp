@@ -61,21 +61,20 @@ InputIndices::complex (const SimplicialComplex& complex, const Classification& c
   return lists;
 }
 
-std::vector<PointIndex>
-InputIndices::pointsOff (const WrapSurface& surface, const std::vector<PointIndex>& copies,
-                         std::size_t input_points) const
+void
+InputIndices::recordPointsOff (WrapResult& result, std::size_t input_points) const
 {
   std::vector<std::uint8_t> on (input_points, 0);
-  const auto mark = [&] (PointIndex p) { on[p < input_points ? p : copies[p - input_points]] = 1; };
-  for (const auto& t : surface.triangles)
+  for (const auto& t : result.surface.triangles)
     for (PointIndex p : t)
-      mark (p);
-  std::vector<PointIndex> off;
+      on[p < input_points ? p : result.copies[p - input_points]] = 1;
+  std::vector<PointIndex>& off = result.off_surface;
+  off.clear ();
   for (std::size_t v = 0; v < vertices_; ++v)
     if (!on[of_vertex_[v]])
       off.push_back (of_vertex_[v]);
   std::sort (off.begin (), off.end ());
-  return off;
+  result.statistics.points_off_surface = off.size ();
 }
 
 std::vector<PointIndex>

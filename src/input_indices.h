@@ -41,10 +41,10 @@ public:
   /** \brief \a w in point indices. */
   WrapSurface surface (const Boundary& w) const;
 
-  /** \brief The points of the vertices (not the copies) that no triangle of \a surface has, in
-    * ascending order. \a surface numbers copy k \a input_points + k, a copy of \a copies[k]. */
-  std::vector<PointIndex> pointsOff (const WrapSurface& surface, const std::vector<PointIndex>& copies,
-                                     std::size_t input_points) const;
+  /** \brief Sets WrapResult::off_surface of \a result and its count: the points of the vertices
+    * (not the copies) that no triangle of result.surface has, in ascending order. The surface
+    * numbers copy k \a input_points + k, a copy of result.copies[k]. */
+  void recordPointsOff (WrapResult& result, std::size_t input_points) const;
 
   /** \brief The points that \a vertices are, in ascending order. */
   std::vector<PointIndex> sortedPoints (const std::vector<std::uint32_t>& vertices) const;

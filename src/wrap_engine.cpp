@@ -267,8 +267,7 @@ WrapEngine::report ()
 #endif
   result_.surface = input_indices_.surface (w_);
   w_ = {};
-  result_.off_surface = input_indices_.pointsOff (result_.surface, result_.copies, points_.size ());
-  stats.points_off_surface = result_.off_surface.size ();
+  input_indices_.recordPointsOff (result_, points_.size ());
   stats.w_triangles = result_.surface.triangles.size ();
   stats.w_dangling_edges = result_.surface.dangling_edges.size ();
   stats.w_isolated_vertices = result_.surface.isolated_vertices.size ();

@@ -229,9 +229,7 @@ recordPointsOff (std::size_t input_points, WrapResult& result)
   for (PointIndex p = 0; p < input_points; ++p)
     if (used[p])
       points.push_back (p);
-  result.off_surface =
-      detail::InputIndices (std::move (points)).pointsOff (result.surface, result.copies, input_points);
-  result.statistics.points_off_surface = result.off_surface.size ();
+  detail::InputIndices (std::move (points)).recordPointsOff (result, input_points);
 }
 
 } // namespace pcl_wrap::mpi

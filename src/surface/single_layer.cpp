@@ -5,7 +5,7 @@
 #include "surface/shell_joins.h"
 #include "surface/shell_pieces.h"
 #include "surface/shell_ties.h"
-#include "util/distance.h"
+#include "surface/solid_join.h"
 #include "util/parallel_for_each.h"
 
 #include <algorithm>
@@ -93,10 +93,7 @@ tentsToLonePoints (const Tetrahedra& tetrahedra, const std::vector<Point3>& posi
       const int i = static_cast<int> (std::find (u, u + 4, v) - u);
       if (x.contains ({3, t}) || !on_boundary (complex.facet (3, t, i).id))
         continue;
-      double longest = 0.0;
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-          longest = std::max (longest, squaredDistance (positions[u[a]], positions[u[b]]));
+      const double longest = longestEdge (tetrahedra, positions, t);
       if (best == NO_TETRAHEDRON || longest < shortest)
       {
         best = t;

@@ -136,9 +136,7 @@ public:
     // The mending leaves voids of its own (a tetrahedron whose star parts went different ways).
     const std::vector<std::uint32_t> filled = fillUnsampledVoidsNear (tetrahedra_, labels_, flipped_, movedSoFar ());
     joined.insert (joined.end (), filled.begin (), filled.end ());
-    if (euler_change_)
-      for (std::uint32_t t : joined)
-        euler_change_->changedSide (t);
+    movedOutsideMending (joined);
     const std::vector<std::uint8_t> before_handles = labels_.inside;
     // Small handles, cut. A volume's solid, X's tetrahedra, has them too: X is contractible, but
     // where a sheet of its triangles spans a tunnel of its tetrahedra, the solid's surface goes
@@ -183,9 +181,7 @@ public:
     if (!late.empty ())
     {
       done.flipped += late.size ();
-      for (std::uint32_t t : late)
-        if (euler_change_)
-          euler_change_->changedSide (t);
+      movedOutsideMending (late);
       mend (tetrahedra_.verticesOf (late), done);
     }
     if (done.flipped == flipped_before)
@@ -198,6 +194,15 @@ public:
 
 private:
   using LinkEdge = std::array<std::uint32_t, 2>;
+
+  /** Tells the weighing of moves, if made, that the tetrahedra \a moved changed side outside the
+    * mending (which tells it of its own). */
+  void movedOutsideMending (const std::vector<std::uint32_t>& moved)
+  {
+    if (euler_change_)
+      for (std::uint32_t t : moved)
+        euler_change_->changedSide (t);
+  }
 
   /** The tetrahedra whose side is not the one in \a before, ascending. */
   std::vector<std::uint32_t> changedSince (const std::vector<std::uint8_t>& before) const
@@ -1057,10 +1062,10 @@ private:
     * it other than the star's vertex floating (its star all outside) with no tetrahedron of its
     * star that the mending of a floating point could move in (bringsOn(), next to an inside
     * one)? A point in a flat pocket of four tetrahedra whose neighbours across the pocket are all
-    * outside is so trapped once its last inside tetrahedron moves out. (In a volume, whose solid is X's, a pair of tetrahedra may move to bring a point
-    * on.) A tetrahedron across a corner's star with a vertex outside the block being mended may be
-    * moving on another thread: it counts as a way on, so that the answer depends on the blocks
-    * alone. */
+    * outside is so trapped once its last inside tetrahedron moves out. (In a volume, whose solid
+    * is X's, a pair of tetrahedra may move to bring a point on.) A tetrahedron across a corner's
+    * star with a vertex outside the block being mended may be moving on another thread: it counts
+    * as a way on, so that the answer depends on the blocks alone. */
   bool trapsACorner (const std::vector<std::uint32_t>& move, StarScratch& s) const
   {
     if (!stays_buried_.empty () || !inside (move.front ()))
