@@ -307,7 +307,8 @@ main (int argc, char** argv)
     const WrapResult result = computeWrap (
         points, file.weights, parameters,
         [&] (const std::string& stage, double seconds) { progress.stage (stage, seconds); },
-        [&] (const std::string& stage, double done) { progress.within (stage, done); });
+        progress ? ProgressObserver ([&] (const std::string& stage, double done) { progress.within (stage, done); })
+                 : ProgressObserver ());
     if (!o.quiet && !result.skipped.empty ())
       std::cerr << "pcl_wrap: " << result.skipped.size () << (result.skipped.size () == 1 ? " point" : " points")
                 << " skipped for a non-finite coordinate or weight, and left out of the output\n";

@@ -40,6 +40,18 @@ expectPerturbedEmptySpheres (const Pipeline& p)
   }
 }
 
+/** A side^3 grid (cospherical ties everywhere) and the points of a unit \a sphere, scaled by
+  * \a radius about the grid's centre. */
+std::vector<Point3>
+gridAndSphere (int side, const std::vector<Point3>& sphere, double radius)
+{
+  auto p = gridSample (side, side, side);
+  const double centre = (side - 1) / 2.0;
+  for (const auto& q : sphere)
+    p.push_back ({centre + radius * q[0], centre + radius * q[1], centre + radius * q[2]});
+  return p;
+}
+
 TEST (Degenerate, PerturbationAgreesWithCgalTriangulation)
 {
   for (const auto& [name, points] :
@@ -152,12 +164,7 @@ TEST (Degenerate, OutputDoesNotChangeFromRunToRunOrWithThreads)
 {
   // Over 20000 points, so that the triangulation is built by parallel insertion (when there
   // is more than one thread), on a grid full of cospherical ties.
-  const auto points = [] {
-    auto p = gridSample (28, 28, 28);
-    for (const auto& q : sphereSample (3000, 5, 0.02))
-      p.push_back ({13.5 + 13 * q[0], 13.5 + 13 * q[1], 13.5 + 13 * q[2]});
-    return p;
-  }();
+  const auto points = gridAndSphere (28, sphereSample (3000, 5, 0.02), 13);
   WrapParameters parameters = rawOutput ();
   const WrapResult reference = computeWrap (points, parameters);
   EXPECT_GT (reference.statistics.perturbations, 0u);
@@ -176,6 +183,29 @@ TEST (Degenerate, OutputDoesNotChangeFromRunToRunOrWithThreads)
       EXPECT_EQ (r.complex[k].in_x, reference.complex[k].in_x);
     }
   }
+}
+
+TEST (Degenerate, InsertionInRoundsForProgressGivesTheSameOutput)
+{
+  // From 100000 points an observed triangulation inserts the points in rounds, to report how far
+  // it has come: the output is that of one insertion, cospherical ties included.
+  const auto points = gridAndSphere (20, sphereSample (95000, 7, 0.01), 12);
+  const WrapParameters parameters = rawOutput ();
+  const WrapResult reference = computeWrap (points, parameters);
+  std::vector<double> reported;
+  const WrapResult observed = computeWrap (points, std::vector<double> (points.size (), 0.0), parameters, {},
+                                           [&] (const std::string& stage, double done) {
+                                             EXPECT_EQ (stage, "triangulation");
+                                             reported.push_back (done);
+                                           });
+  ASSERT_GT (reported.size (), 1u);
+  EXPECT_TRUE (std::is_sorted (reported.begin (), reported.end ()));
+  EXPECT_EQ (reported.back (), 1.0);
+  EXPECT_GT (reference.statistics.perturbations, 0u);
+  EXPECT_EQ (observed.statistics.perturbations, reference.statistics.perturbations);
+  EXPECT_EQ (observed.statistics.simplices, reference.statistics.simplices);
+  EXPECT_EQ (observed.surface.triangles, reference.surface.triangles);
+  EXPECT_EQ (observed.surface.dangling_edges, reference.surface.dangling_edges);
 }
 
 TEST (Degenerate, AThreadCountHoldsForItsCallOnly)
