@@ -4,7 +4,9 @@
 // bench_wrap SHAPE N [SEED [RUNS]]: on the same N points (SHAPE: sphere, cube or torus, or a point
 // file), times and measures the peak memory of CGAL's triangulations alone (the floor any
 // Delaunay-based method pays) and of pcl_wrap, stage by stage: its default output, the raw W,
-// and the raw W of a tighter wrap (--radius-rel 4, front deletion). Each measurement runs in a
+// the raw W of a tighter wrap (--radius-rel 4, front deletion), and the raw W with a progress
+// observer (as the command line and Python run it: from 100,000 points the triangulation then
+// inserts the points in rounds, to report how far it has come). Each measurement runs in a
 // child process of its own, so each peak resident set size is its own. With RUNS > 1 they
 // take turns RUNS times and each reports its fastest run: a shared machine's speed can drift by
 // 20-30% over minutes, and taking turns exposes them all to the same drift. The ratio of pcl_wrap to
@@ -169,13 +171,16 @@ main (int argc, char** argv)
     CGAL::Delaunay_triangulation_3<K, Tds, CGAL::Default, LockGrid> dt (p.begin (), p.end (), &locks);
     std::snprintf (m.detail, sizeof (m.detail), "%zu cells", std::size_t (dt.number_of_finite_cells ()));
   };
-  const auto wrapAll = [&] (Measurement& m, pcl_wrap::Output output, double radius_rel) {
+  const auto wrapAll = [&] (Measurement& m, pcl_wrap::Output output, double radius_rel, bool observed = false) {
     pcl_wrap::WrapParameters parameters;
     parameters.keep_complex = false;
     parameters.output = output;
     if (radius_rel > 0)
       parameters.threshold = pcl_wrap::Threshold::relativeRadius (radius_rel);
-    const pcl_wrap::WrapResult r = pcl_wrap::computeWrap (points, parameters);
+    // Observed, the triangulation reports its progress (as the command line and Python do).
+    const pcl_wrap::WrapResult r = observed ? pcl_wrap::computeWrap (points, std::vector<double> (points.size (), 0.0),
+                                                                     parameters, {}, [] (const std::string&, double) {})
+                                            : pcl_wrap::computeWrap (points, parameters);
     std::string stages;
     for (const auto& t : r.statistics.timings)
       stages += t.stage + "=" + std::to_string (t.seconds) + " ";
@@ -201,19 +206,23 @@ main (int argc, char** argv)
   const auto surface = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::surface, 0); };
   const auto raw = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw, 0); };
   const auto tighter = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw, TIGHTER); };
-  Measurement delaunay, regular, wrap, wrap_raw, wrap_tighter;
-  std::vector<double> turn_ratios, raw_ratios, tighter_ratios;
+  const auto observed = [&] (Measurement& m) { wrapAll (m, pcl_wrap::Output::raw, 0, true); };
+  Measurement delaunay, regular, wrap, wrap_raw, wrap_tighter, wrap_observed;
+  std::vector<double> turn_ratios, raw_ratios, tighter_ratios, observed_ratios;
   for (int run = 0; run < runs; ++run)
   {
     keepBest (delaunay, measured (delaunayAlone));
-    const Measurement r = measured (regularAlone), w = measured (surface), wr = measured (raw), wt = measured (tighter);
+    const Measurement r = measured (regularAlone), w = measured (surface), wr = measured (raw), wt = measured (tighter),
+                      wo = measured (observed);
     keepBest (regular, r);
     keepBest (wrap, w);
     keepBest (wrap_raw, wr);
     keepBest (wrap_tighter, wt);
+    keepBest (wrap_observed, wo);
     turn_ratios.push_back (w.seconds / r.seconds);
     raw_ratios.push_back (w.seconds / wr.seconds);
     tighter_ratios.push_back (wt.seconds / wr.seconds);
+    observed_ratios.push_back (wo.seconds / wr.seconds);
   }
   const Measurement parallel = measured (delaunayParallel);
   const std::string parallel_name = "  the same, on " + std::to_string (tbb::info::default_concurrency ()) + " threads";
@@ -234,6 +243,8 @@ main (int argc, char** argv)
                wrap_raw.detail);
   std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw, --radius-rel 4", wrap_tighter.seconds,
                wrap_tighter.peak_kib / 1024.0, wrap_tighter.detail);
+  std::printf ("  %-28s %9.3f %11.1f  %s\n", "pcl_wrap raw, observed", wrap_observed.seconds,
+               wrap_observed.peak_kib / 1024.0, wrap_observed.detail);
   std::printf ("  ratio to regular triangulation: time %.2fx, peak memory %.2fx\n", wrap.seconds / regular.seconds,
                double (wrap.peak_kib) / double (regular.peak_kib));
   std::printf ("  surface against raw W: time %.2fx (per turn:", wrap.seconds / wrap_raw.seconds);
@@ -244,6 +255,10 @@ main (int argc, char** argv)
   for (double r : tighter_ratios)
     std::printf (" %.2fx", r);
   std::printf ("), peak memory %.2fx\n", double (wrap_tighter.peak_kib) / double (wrap_raw.peak_kib));
+  std::printf ("  observed against raw W: time %.2fx (per turn:", wrap_observed.seconds / wrap_raw.seconds);
+  for (double r : observed_ratios)
+    std::printf (" %.2fx", r);
+  std::printf (")\n");
   if (runs > 1)
   {
     std::printf ("  time ratio within each turn:");

@@ -236,8 +236,8 @@ triangulateWith (const std::vector<Point3>& positions, const Site& site, const s
   {
     // Rounds of consecutive stretches of one space-filling curve through the points: each
     // round grows the triangulation by a region, whose cells stay near each other in memory as
-    // they do in one insertion. (Rounds of random samples each spread their new cells over the
-    // whole triangulation, and took twice as long at a million points.)
+    // they do in one insertion. (Rounds of random samples would spread each round's new cells
+    // over the whole triangulation: about 1.8 times as long at a million points.)
     std::vector<std::pair<typename Cgal::Point, std::uint32_t>> along;
     along.reserve (input.size ());
     for (std::uint32_t i : zOrder (positions))
