@@ -189,17 +189,37 @@ readTopSimplices (const Cgal& rt, const Id& id, Triangulation& t, const Release&
     return;
   }
   case 2:
+  {
+    // Each triangle from its lowest vertex on (a rotation, as CGAL oriented it), listed by its
+    // vertex set: an order that CGAL's cells and the order of insertion do not change.
+    std::vector<std::array<std::uint32_t, 3>> triangles;
     for (auto f = rt.finite_facets_begin (); f != rt.finite_facets_end (); ++f)
-      for (int i = 0; i < 3; ++i)
-        top.push_back (id (f->first->vertex (i)));
+    {
+      std::array<std::uint32_t, 3> v{id (f->first->vertex (0)), id (f->first->vertex (1)), id (f->first->vertex (2))};
+      std::rotate (v.begin (), std::min_element (v.begin (), v.end ()), v.end ());
+      triangles.push_back (v);
+    }
+    const auto key = [] (const std::array<std::uint32_t, 3>& v) {
+      return std::array<std::uint32_t, 3>{v[0], std::min (v[1], v[2]), std::max (v[1], v[2])};
+    };
+    std::sort (triangles.begin (), triangles.end (), [&] (const auto& a, const auto& b) { return key (a) < key (b); });
+    for (const auto& v : triangles)
+      top.insert (top.end (), v.begin (), v.end ());
     break;
+  }
   case 1:
+  {
+    std::vector<std::array<std::uint32_t, 2>> edges;
     for (auto e = rt.finite_edges_begin (); e != rt.finite_edges_end (); ++e)
     {
-      top.push_back (id (e->first->vertex (e->second)));
-      top.push_back (id (e->first->vertex (e->third)));
+      const std::uint32_t a = id (e->first->vertex (e->second)), b = id (e->first->vertex (e->third));
+      edges.push_back ({std::min (a, b), std::max (a, b)});
     }
+    std::sort (edges.begin (), edges.end ());
+    for (const auto& v : edges)
+      top.insert (top.end (), v.begin (), v.end ());
     break;
+  }
   case 0:
     top.push_back (0);
     break;

@@ -49,8 +49,10 @@ FilledInParallel<std::uint32_t>
 tetrahedronOrder (const FilledInParallel<std::uint32_t>& vertices, std::size_t num_vertices);
 
 /** \brief Triangulates distinct, finite weighted points. With \a progress, a large input is
-  * inserted in rounds, each a random sample of the points (the triangulation is the same), and
-  * \a progress is told the share inserted after each. */
+  * inserted in rounds, each a stretch of the points' Z-order curve (the triangulation is the
+  * same), and \a progress is told the share inserted after each. The top simplices come in an
+  * order that depends only on their vertex ids: tetrahedronOrder() when they span space, else by
+  * vertex set. */
 Triangulation
 triangulate (const std::vector<Point3>& positions, const std::vector<double>& weights,
              const std::function<void (double)>& progress = {});
