@@ -89,9 +89,7 @@ tentsToLonePoints (const Tetrahedra& tetrahedra, const std::vector<Point3>& posi
     double shortest = 0.0;
     for (std::uint32_t t : star.tetrahedra ())
     {
-      const std::uint32_t* u = complex.vertices (3, t);
-      const int i = static_cast<int> (std::find (u, u + 4, v) - u);
-      if (x.contains ({3, t}) || !on_boundary (complex.facet (3, t, i).id))
+      if (x.contains ({3, t}) || !on_boundary (complex.facet (3, t, tetrahedra.localIndex (t, v)).id))
         continue;
       const double longest = longestEdge (tetrahedra, positions, t);
       if (best == NO_TETRAHEDRON || longest < shortest)
