@@ -4,6 +4,7 @@
 
 #include "pcl_file_checks.h"
 #include "text_line.h"
+#include "xyz_text.h"
 
 #include <pcl_wrap/point_field.h>
 
@@ -91,33 +92,37 @@ takeTriple (const std::vector<std::vector<double>>& columns, std::size_t first, 
                               std::uint8_t (columns[first + 2][i]), 255});
 }
 
+/** The whole of a file's bytes. */
+std::string
+readText (const std::string& path)
+{
+  std::ifstream in = openText (path);
+  std::string text;
+  std::vector<char> block (std::size_t (1) << 20);
+  while (in.read (block.data (), std::streamsize (block.size ())) || in.gcount () > 0)
+    text.append (block.data (), std::size_t (in.gcount ()));
+  return text;
+}
+
 PointFile
 readXyz (const std::string& path, bool weights_column)
 {
-  std::ifstream in = openText (path);
+  XyzTable table = parseXyzText (readText (path));
+  if (!table.error.empty ())
+    fail (path, table.error);
   PointFile file;
-  std::vector<std::vector<double>> extra; // per column after x, y, z
-  std::vector<double> numbers;
-  std::string line;
-  std::size_t columns = 0;
-  for (std::size_t number = 1; std::getline (in, line); ++number)
+  const std::size_t columns = table.columns;
+  const std::size_t rows = columns == 0 ? 0 : table.values.size () / columns;
+  file.points.resize (rows);
+  std::vector<std::vector<double>> extra (columns < 3 ? 0 : columns - 3, std::vector<double> (rows));
+  for (std::size_t i = 0; i < rows; ++i)
   {
-    if (!parseNumbers (line, numbers))
-      fail (path, "line " + std::to_string (number) + ": not a number");
-    if (numbers.empty ())
-      continue;
-    if (numbers.size () < 3)
-      fail (path, "line " + std::to_string (number) + ": expected at least 3 numbers (x y z ...), found " +
-                      std::to_string (numbers.size ()));
-    if (columns != 0 && numbers.size () != columns)
-      fail (path, "line " + std::to_string (number) + ": " + std::to_string (numbers.size ()) +
-                      " numbers where earlier lines have " + std::to_string (columns));
-    columns = numbers.size ();
-    extra.resize (columns - 3);
-    file.points.push_back ({numbers[0], numbers[1], numbers[2]});
+    const double* row = &table.values[i * columns];
+    file.points[i] = {row[0], row[1], row[2]};
     for (std::size_t c = 3; c < columns; ++c)
-      extra[c - 3].push_back (numbers[c]);
+      extra[c - 3][i] = row[c];
   }
+  table = {};
   if (weights_column && columns < 4 && !file.points.empty ())
     fail (path, "--weights-column: the lines have no 4th column");
   std::size_t first = 0; // the first column not taken yet

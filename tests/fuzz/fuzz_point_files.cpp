@@ -2,8 +2,11 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // libFuzzer: arbitrary bytes as each input format of the command-line tool. A file either reads
-// or gives a FileError; anything else (a crash, another exception) is a finding.
+// or gives a FileError; anything else (a crash, another exception) is a finding. The bytes are
+// also read as a .xyz file's text in tasks of a few bytes, which must give what a reading line by
+// line gives.
 #include "point_file.h"
+#include "support/xyz_reference.h"
 
 #include <pcl/console/print.h>
 
@@ -21,6 +24,10 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
   if (size < 1)
     return 0;
+  const std::string bytes (reinterpret_cast<const char*> (data + 1), size - 1);
+  if (!pcl_wrap::test::sameXyzTables (pcl_wrap::apps::parseXyzText (bytes, 1 + data[0] % 32),
+                                      pcl_wrap::test::referenceXyzTable (bytes)))
+    __builtin_trap ();
   const std::string path = stem + EXTENSIONS[data[0] % 5];
   std::ofstream (path, std::ios::binary).write (reinterpret_cast<const char*> (data + 1), std::streamsize (size - 1));
   try
