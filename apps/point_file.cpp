@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -92,22 +93,13 @@ takeTriple (const std::vector<std::vector<double>>& columns, std::size_t first, 
                               std::uint8_t (columns[first + 2][i]), 255});
 }
 
-/** The whole of a file's bytes. */
-std::string
-readText (const std::string& path)
-{
-  std::ifstream in = openText (path);
-  std::string text;
-  std::vector<char> block (std::size_t (1) << 20);
-  while (in.read (block.data (), std::streamsize (block.size ())) || in.gcount () > 0)
-    text.append (block.data (), std::size_t (in.gcount ()));
-  return text;
-}
-
 PointFile
 readXyz (const std::string& path, bool weights_column)
 {
-  XyzTable table = parseXyzText (readText (path));
+  std::ifstream in = openText (path);
+  std::error_code unknown; // not a regular file: no room is made ahead
+  const std::uintmax_t bytes = std::filesystem::file_size (path, unknown);
+  XyzTable table = readXyzStream (in, unknown ? 0 : bytes);
   if (!table.error.empty ())
     fail (path, table.error);
   PointFile file;

@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cstring>
 #include <limits>
+#include <string_view>
 
 namespace pcl_wrap::apps
 {
@@ -86,7 +87,7 @@ struct Chunk
 
 /** Reads the lines of \a chunk as the file's reader would if they came first. */
 void
-readChunk (const std::string& text, Chunk& chunk)
+readChunk (std::string_view text, Chunk& chunk)
 {
   const char* p = text.data () + chunk.begin;
   const char* const stop = text.data () + chunk.end;
@@ -122,19 +123,23 @@ readChunk (const std::string& text, Chunk& chunk)
 
 } // namespace
 
-XyzTable
-parseXyzText (const std::string& text, std::size_t chunk_bytes)
+XyzParser::XyzParser (std::size_t chunk_bytes) : chunk_bytes_ (std::max<std::size_t> (chunk_bytes, 1)) {}
+
+bool
+XyzParser::parse (const char* first, const char* last)
 {
-  chunk_bytes = std::max<std::size_t> (chunk_bytes, 1);
+  if (!table_.error.empty ())
+    return false;
   // Whole lines to each task: a chunk ends after the first '\n' at or past its share.
+  const std::string_view text (first, std::size_t (last - first));
   std::vector<Chunk> chunks;
   for (std::size_t at = 0; at < text.size ();)
   {
-    std::size_t end = std::min (text.size (), at + chunk_bytes);
+    std::size_t end = std::min (text.size (), at + chunk_bytes_);
     if (end < text.size ())
     {
-      const void* eol = std::memchr (text.data () + end, '\n', text.size () - end);
-      end = eol ? std::size_t (static_cast<const char*> (eol) - text.data ()) + 1 : text.size ();
+      const std::size_t eol = text.find ('\n', end);
+      end = eol == std::string_view::npos ? text.size () : eol + 1;
     }
     chunks.emplace_back ().begin = at;
     chunks.back ().end = end;
@@ -144,38 +149,82 @@ parseXyzText (const std::string& text, std::size_t chunk_bytes)
 
   // In file order: the first failing line, seen across chunks; a chunk's first line with numbers
   // must also have as many as the lines before it.
-  XyzTable table;
-  std::size_t lines_before = 0, rows = 0;
+  std::size_t values = table_.values.size ();
   for (const Chunk& chunk : chunks)
   {
-    const bool mismatch = chunk.columns != 0 && table.columns != 0 && chunk.columns != table.columns;
+    const bool mismatch = chunk.columns != 0 && table_.columns != 0 && chunk.columns != table_.columns;
     if (mismatch && chunk.first_line < chunk.error_line)
+      table_.error = "line " + std::to_string (lines_ + chunk.first_line + 1) + ": " + std::to_string (chunk.columns) +
+                     " numbers where earlier lines have " + std::to_string (table_.columns);
+    else if (chunk.error_line != NO_LINE)
+      table_.error = "line " + std::to_string (lines_ + chunk.error_line + 1) + ": " + chunk.error;
+    if (!table_.error.empty ())
     {
-      table.error = "line " + std::to_string (lines_before + chunk.first_line + 1) + ": " +
-                    std::to_string (chunk.columns) + " numbers where earlier lines have " +
-                    std::to_string (table.columns);
-      table.columns = 0;
-      return table;
+      table_.values = {};
+      table_.columns = 0;
+      return false;
     }
-    if (chunk.error_line != NO_LINE)
-    {
-      table.error = "line " + std::to_string (lines_before + chunk.error_line + 1) + ": " + chunk.error;
-      table.columns = 0;
-      return table;
-    }
-    if (table.columns == 0)
-      table.columns = chunk.columns;
-    lines_before += chunk.lines;
-    rows += chunk.columns == 0 ? 0 : chunk.values.size () / chunk.columns;
+    if (table_.columns == 0)
+      table_.columns = chunk.columns;
+    lines_ += chunk.lines;
+    values += chunk.values.size ();
   }
-  table.values.resize (rows * table.columns);
-  std::vector<std::size_t> offset (chunks.size () + 1, 0);
+  std::vector<std::size_t> offset (chunks.size () + 1, table_.values.size ());
   for (std::size_t k = 0; k < chunks.size (); ++k)
     offset[k + 1] = offset[k] + chunks[k].values.size ();
+  table_.values.resize (values);
   tbb::parallel_for (std::size_t (0), chunks.size (), [&] (std::size_t k) {
-    std::copy (chunks[k].values.begin (), chunks[k].values.end (), table.values.begin () + std::ptrdiff_t (offset[k]));
+    std::copy (chunks[k].values.begin (), chunks[k].values.end (), table_.values.begin () + std::ptrdiff_t (offset[k]));
   });
-  return table;
+  return true;
+}
+
+XyzTable
+XyzParser::take ()
+{
+  XyzTable out = std::move (table_);
+  table_ = {};
+  lines_ = 0;
+  return out;
+}
+
+XyzTable
+readXyzStream (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes)
+{
+  XyzParser parser;
+  std::string window; // the text not parsed yet: a line's start, then what is read after it
+  window_bytes = std::max<std::size_t> (window_bytes, 1);
+  // A small text is read at once; one of unknown length in steps that double up to a window.
+  std::size_t step = bytes > 0 ? std::size_t (std::min<std::uintmax_t> (window_bytes, bytes + 1))
+                               : std::min<std::size_t> (window_bytes, std::size_t (1) << 16);
+  bool first = true;
+  for (bool reading = true; reading; step = std::min (2 * step, window_bytes))
+  {
+    const std::size_t kept = window.size ();
+    window.resize (kept + step);
+    reading = in.read (window.data () + kept, std::streamsize (step)) || in.gcount () > 0;
+    window.resize (kept + std::size_t (in.gcount ()));
+    // Whole lines; at the end of the text, the last line too.
+    const std::size_t whole = reading ? window.rfind ('\n') + 1 : window.size ();
+    if (whole == 0)
+      continue; // no '\n' yet (std::string::npos + 1)
+    if (!parser.parse (window.data (), window.data () + whole))
+      break;
+    if (first && reading && bytes > whole)
+      parser.reserve (std::size_t (double (parser.table ().values.size ()) * double (bytes) / double (whole) * 1.02) +
+                      64);
+    first = false;
+    window.erase (0, whole);
+  }
+  return parser.take ();
+}
+
+XyzTable
+parseXyzText (const std::string& text, std::size_t chunk_bytes)
+{
+  XyzParser parser (chunk_bytes);
+  parser.parse (text.data (), text.data () + text.size ());
+  return parser.take ();
 }
 
 } // namespace pcl_wrap::apps

@@ -3,13 +3,14 @@
 //
 // The .xyz reader's parallel parse against the line-by-line reading it replaces: the same
 // numbers bit for bit, or the same first error, on edge cases, random bytes and texts cut into
-// tasks at every line.
+// tasks at every line, and read from a stream a window at a time.
 #include "support/xyz_reference.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <random>
+#include <sstream>
 
 namespace pcl_wrap::test
 {
@@ -139,6 +140,39 @@ TEST (XyzText, TasksCutAtEveryLineAgree)
   }
   // A cloud as large as a scan's: the same numbers, bit for bit.
   expectSameAsReference (numberLines (200000, 3, random), std::size_t (1) << 18);
+}
+
+TEST (XyzText, StreamReadInWindowsAgrees)
+{
+  // Windows shorter than a line, than a few lines and longer than the text; with the stream's
+  // length known (room made ahead) and not.
+  std::mt19937_64 random (13);
+  const std::string three = numberLines (40, 3, random), four = numberLines (40, 4, random);
+  std::vector<std::string> texts{three,
+                                 three.substr (0, three.size () - 1),
+                                 three + "1 2\n",
+                                 "",
+                                 "\n",
+                                 "1 2 3",
+                                 "# no number\n",
+                                 three + std::string (3000, '5') + " 1 2\n" + three};
+  std::size_t at = 0;
+  for (int line = 0; line < 40; line += 3)
+  {
+    texts.push_back (three.substr (0, at) + "1 two 3\n" + three.substr (at));
+    texts.push_back (three.substr (0, at) + four.substr (at));
+    for (int skip = 0; skip < 3; ++skip)
+      at = three.find ('\n', at) + 1;
+  }
+  for (const std::string& text : texts)
+    for (std::size_t window :
+         {std::size_t (1), std::size_t (7), std::size_t (64), std::size_t (1000), std::size_t (1) << 25})
+      for (const std::size_t bytes : {text.size (), std::size_t (0)})
+      {
+        std::istringstream in (text);
+        EXPECT_TRUE (sameXyzTables (apps::readXyzStream (in, bytes, window), referenceXyzTable (text)))
+            << "window " << window << ", text '" << text.substr (0, 100) << "'";
+      }
 }
 
 } // namespace

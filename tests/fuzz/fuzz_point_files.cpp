@@ -3,8 +3,8 @@
 //
 // libFuzzer: arbitrary bytes as each input format of the command-line tool. A file either reads
 // or gives a FileError; anything else (a crash, another exception) is a finding. The bytes are
-// also read as a .xyz file's text in tasks of a few bytes, which must give what a reading line by
-// line gives.
+// also read as a .xyz file's text in tasks of a few bytes, and from a stream in windows of a few
+// bytes, which must give what a reading line by line gives.
 #include "point_file.h"
 #include "support/xyz_reference.h"
 
@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -25,8 +26,10 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   if (size < 1)
     return 0;
   const std::string bytes (reinterpret_cast<const char*> (data + 1), size - 1);
-  if (!pcl_wrap::test::sameXyzTables (pcl_wrap::apps::parseXyzText (bytes, 1 + data[0] % 32),
-                                      pcl_wrap::test::referenceXyzTable (bytes)))
+  const pcl_wrap::apps::XyzTable reference = pcl_wrap::test::referenceXyzTable (bytes);
+  std::istringstream stream (bytes);
+  if (!pcl_wrap::test::sameXyzTables (pcl_wrap::apps::parseXyzText (bytes, 1 + data[0] % 32), reference) ||
+      !pcl_wrap::test::sameXyzTables (pcl_wrap::apps::readXyzStream (stream, 0, 1 + data[0] % 16), reference))
     __builtin_trap ();
   const std::string path = stem + EXTENSIONS[data[0] % 5];
   std::ofstream (path, std::ios::binary).write (reinterpret_cast<const char*> (data + 1), std::streamsize (size - 1));
