@@ -2,6 +2,7 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "mesh_file.h"
 
+#include "number_text.h"
 #include "point_file.h"
 
 #include <cctype>
@@ -100,28 +101,69 @@ writePly (std::ostream& out, const std::vector<Point3>& points, const std::vecto
   }
 }
 
+/** "x y z": three numbers as a stream writes them (a float widened to double). */
+template <class T>
+void
+appendTriple (std::string& text, const std::array<T, 3>& values)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    if (k > 0)
+      text += ' ';
+    appendReal (text, values[k]);
+  }
+}
+
 void
 writeObj (std::ostream& out, const std::vector<Point3>& points, const std::vector<std::array<PointIndex, 3>>& triangles,
           const PointAttributes& a)
 {
   out << "# written by pcl_wrap\n";
-  for (std::size_t i = 0; i < points.size (); ++i)
-  {
-    const Point3& p = points[i];
-    out << "v " << p[0] << ' ' << p[1] << ' ' << p[2];
+  writeInParallel (out, points.size (), [&] (std::size_t i, std::string& text) {
+    text += "v ";
+    appendTriple (text, points[i]);
     if (!a.colours.empty ())
       for (int k = 0; k < 3; ++k)
-        out << ' ' << a.colours[i][k] / 255.0;
-    out << '\n';
-  }
-  for (const auto& n : a.normals)
-    out << "vn " << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
-  for (const auto& t : triangles)
-    if (a.normals.empty ())
-      out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
-    else
-      out << "f " << t[0] + 1 << "//" << t[0] + 1 << ' ' << t[1] + 1 << "//" << t[1] + 1 << ' ' << t[2] + 1 << "//"
-          << t[2] + 1 << '\n';
+      {
+        text += ' ';
+        appendReal (text, a.colours[i][k] / 255.0);
+      }
+    text += '\n';
+  });
+  writeInParallel (out, a.normals.size (), [&] (std::size_t i, std::string& text) {
+    text += "vn ";
+    appendTriple (text, a.normals[i]);
+    text += '\n';
+  });
+  writeInParallel (out, triangles.size (), [&] (std::size_t i, std::string& text) {
+    text += 'f';
+    for (PointIndex v : triangles[i])
+    {
+      text += ' ';
+      appendInteger (text, v + 1ll);
+      if (!a.normals.empty ())
+      {
+        text += "//";
+        appendInteger (text, v + 1ll);
+      }
+    }
+    text += '\n';
+  });
+}
+
+/** "3 a b c\n" per triangle: the faces of a .vtk or .off file. */
+void
+writeTriangles (std::ostream& out, const std::vector<std::array<PointIndex, 3>>& triangles)
+{
+  writeInParallel (out, triangles.size (), [&] (std::size_t i, std::string& text) {
+    text += '3';
+    for (PointIndex v : triangles[i])
+    {
+      text += ' ';
+      appendInteger (text, v);
+    }
+    text += '\n';
+  });
 }
 
 void
@@ -130,34 +172,43 @@ writeVtk (std::ostream& out, const std::vector<Point3>& points, const std::vecto
 {
   out << "# vtk DataFile Version 3.0\nwritten by pcl_wrap\nASCII\nDATASET POLYDATA\nPOINTS " << points.size ()
       << " double\n";
-  for (const Point3& p : points)
-    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  writeInParallel (out, points.size (), [&] (std::size_t i, std::string& text) {
+    appendTriple (text, points[i]);
+    text += '\n';
+  });
   out << "POLYGONS " << triangles.size () << ' ' << 4 * triangles.size () << '\n';
-  for (const auto& t : triangles)
-    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  writeTriangles (out, triangles);
   if (a.empty ())
     return;
   out << "POINT_DATA " << points.size () << '\n';
   if (!a.normals.empty ())
   {
     out << "NORMALS normals float\n";
-    for (const auto& n : a.normals)
-      out << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
+    writeInParallel (out, a.normals.size (), [&] (std::size_t i, std::string& text) {
+      appendTriple (text, a.normals[i]);
+      text += '\n';
+    });
   }
   // First: a reader that takes one set of scalars (VTK's by default: PCL, pcl_viewer) takes these.
   if (!a.colours.empty ())
   {
     const int components = a.alpha ? 4 : 3;
     out << "COLOR_SCALARS " << (a.alpha ? "RGBA " : "RGB ") << components << '\n'; // PCL reads "RGB"
-    for (const auto& c : a.colours)
+    writeInParallel (out, a.colours.size (), [&] (std::size_t i, std::string& text) {
       for (int k = 0; k < components; ++k)
-        out << c[k] / 255.0 << (k + 1 < components ? ' ' : '\n');
+      {
+        appendReal (text, a.colours[i][k] / 255.0);
+        text += k + 1 < components ? ' ' : '\n';
+      }
+    });
   }
   for (const ScalarField& f : a.scalars)
   {
     out << "SCALARS " << headerName (f.name) << " double 1\nLOOKUP_TABLE default\n";
-    for (double v : f.values)
-      out << v << '\n';
+    writeInParallel (out, f.values.size (), [&] (std::size_t i, std::string& text) {
+      appendReal (text, f.values[i]);
+      text += '\n';
+    });
   }
 }
 
@@ -167,19 +218,22 @@ writeOff (std::ostream& out, const std::vector<Point3>& points, const std::vecto
 {
   out << (a.colours.empty () ? "" : "C") << (a.normals.empty () ? "" : "N") << "OFF\n# written by pcl_wrap\n"
       << points.size () << ' ' << triangles.size () << " 0\n";
-  for (std::size_t i = 0; i < points.size (); ++i)
-  {
-    const Point3& p = points[i];
-    out << p[0] << ' ' << p[1] << ' ' << p[2];
+  writeInParallel (out, points.size (), [&] (std::size_t i, std::string& text) {
+    appendTriple (text, points[i]);
     if (!a.normals.empty ())
-      out << ' ' << a.normals[i][0] << ' ' << a.normals[i][1] << ' ' << a.normals[i][2];
+    {
+      text += ' ';
+      appendTriple (text, a.normals[i]);
+    }
     if (!a.colours.empty ()) // whole numbers: 0 to 255, as the format reads them
       for (int k = 0; k < 4; ++k)
-        out << ' ' << int (a.colours[i][k]);
-    out << '\n';
-  }
-  for (const auto& t : triangles)
-    out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+      {
+        text += ' ';
+        appendInteger (text, a.colours[i][k]);
+      }
+    text += '\n';
+  });
+  writeTriangles (out, triangles);
 }
 
 /** Binary STL: each triangle on its own, its corners and normal in float, as the format has it. */
