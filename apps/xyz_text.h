@@ -52,7 +52,7 @@ private:
 /** \brief The table of a stream's text, read a window at a time by one XyzParser: the text is not
   * held whole, and the table has room for all of it from the first window on.
   * \param[in] bytes the stream's length if known (0 if not), to make that room
-  * \param[in] window_bytes how much text is read at once, at least */
+  * \param[in] window_bytes the most text read at once */
 XyzTable
 readXyzStream (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes = std::size_t (1) << 25);
 
