@@ -73,6 +73,13 @@ readLine (const char* first, const char* last, std::vector<double>& out, std::si
   }
 }
 
+/** The problem of a line of \a count numbers after lines of \a columns. */
+std::string
+widthProblem (std::size_t count, std::size_t columns)
+{
+  return std::to_string (count) + " numbers where earlier lines have " + std::to_string (columns);
+}
+
 /** One task's whole lines and what it made of them. */
 struct Chunk
 {
@@ -104,7 +111,7 @@ readChunk (std::string_view text, Chunk& chunk)
     else if (count > 0 && count < 3)
       problem = "expected at least 3 numbers (x y z ...), found " + std::to_string (count);
     else if (count > 0 && chunk.columns != 0 && count != chunk.columns)
-      problem = std::to_string (count) + " numbers where earlier lines have " + std::to_string (chunk.columns);
+      problem = widthProblem (count, chunk.columns);
     if (!problem.empty ())
     {
       chunk.values.resize (before);
@@ -149,13 +156,12 @@ XyzParser::parse (const char* first, const char* last)
 
   // In file order: the first failing line, seen across chunks; a chunk's first line with numbers
   // must also have as many as the lines before it.
-  std::size_t values = table_.values.size ();
   for (const Chunk& chunk : chunks)
   {
     const bool mismatch = chunk.columns != 0 && table_.columns != 0 && chunk.columns != table_.columns;
     if (mismatch && chunk.first_line < chunk.error_line)
-      table_.error = "line " + std::to_string (lines_ + chunk.first_line + 1) + ": " + std::to_string (chunk.columns) +
-                     " numbers where earlier lines have " + std::to_string (table_.columns);
+      table_.error = "line " + std::to_string (lines_ + chunk.first_line + 1) + ": " +
+                     widthProblem (chunk.columns, table_.columns);
     else if (chunk.error_line != NO_LINE)
       table_.error = "line " + std::to_string (lines_ + chunk.error_line + 1) + ": " + chunk.error;
     if (!table_.error.empty ())
@@ -167,12 +173,11 @@ XyzParser::parse (const char* first, const char* last)
     if (table_.columns == 0)
       table_.columns = chunk.columns;
     lines_ += chunk.lines;
-    values += chunk.values.size ();
   }
   std::vector<std::size_t> offset (chunks.size () + 1, table_.values.size ());
   for (std::size_t k = 0; k < chunks.size (); ++k)
     offset[k + 1] = offset[k] + chunks[k].values.size ();
-  table_.values.resize (values);
+  table_.values.resize (offset.back ());
   tbb::parallel_for (std::size_t (0), chunks.size (), [&] (std::size_t k) {
     std::copy (chunks[k].values.begin (), chunks[k].values.end (), table_.values.begin () + std::ptrdiff_t (offset[k]));
   });
