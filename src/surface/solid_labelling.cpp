@@ -5,6 +5,8 @@
 #include "util/parallel_for_each.h"
 #include "util/portable.h"
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -60,6 +62,7 @@ orthosphere (const std::uint32_t* v, const std::vector<Point3>& p, const std::ve
 }
 
 constexpr double VOTE_ONE = 32767; // a cosine of 1 in fixed point
+constexpr std::size_t VOTE_BLOCK = 4096; // tetrahedra voted together, their spheres kept
 constexpr std::uint8_t UNKNOWN = 0, INSIDE = 1, OUTSIDE = 2, TIED = 3;
 
 int
@@ -99,23 +102,23 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
 {
   const std::size_t n = tets_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
-  FilledInParallel<Sphere> spheres (n);
-  parallelForEach (n, [&] (std::size_t t) { spheres[t] = orthosphere (vertices (t), positions, weights); });
 
   // The vote of the sphere of t across its facet i for the other side: the cosine of the angle
   // at which the two spheres meet. Heights are taken along the facet's normal towards t's apex.
-  const auto vote = [&] (std::size_t t, int i) -> double {
+  // sphereOf (t) is the orthosphere of tetrahedron t.
+  const auto vote = [&] (std::size_t t, int i, const auto& sphereOf) -> double {
     const std::uint32_t* v = vertices (t);
     const Point3& a = positions[v[(i + 1) & 3]];
     const Vec normal_raw =
         cross (minus (positions[v[(i + 2) & 3]], a), minus (positions[v[(i + 3) & 3]], a));
     const double length = std::sqrt (dot (normal_raw, normal_raw));
-    if (!(length > 0) || !spheres[t].finite)
+    const Sphere& st = sphereOf (t);
+    if (!(length > 0) || !st.finite)
       return 0.0;
     Vec normal{normal_raw[0] / length, normal_raw[1] / length, normal_raw[2] / length};
     if (dot (normal, minus (positions[v[i]], a)) < 0)
       normal = {-normal[0], -normal[1], -normal[2]};
-    const Vec to_t = minus (spheres[t].centre, a);
+    const Vec to_t = minus (st.centre, a);
     const double ht = dot (to_t, normal);
     const double wa = weights[v[(i + 1) & 3]];
     const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
@@ -125,9 +128,10 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
       const double r = std::sqrt (rho2 + ht * ht);
       return r > 0 ? std::clamp (-ht / r, -1.0, 1.0) : 0.0;
     }
-    if (!spheres[u].finite)
+    const Sphere su = sphereOf (u);
+    if (!su.finite)
       return 0.0;
-    const Vec to_u = minus (spheres[u].centre, a);
+    const Vec to_u = minus (su.centre, a);
     const double hu = dot (to_u, normal);
     // The circle both spheres pass through, from the centre nearer the facet (less cancellation).
     const double rho2 = std::fabs (ht) <= std::fabs (hu) ? dot (to_t, to_t) - ht * ht - wa
@@ -136,22 +140,41 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
   };
   // A vote is the same from both sides: each interior facet's is computed by its lower-numbered
   // tetrahedron, which writes it into the other's record too (into a field that only it writes).
-  parallelForEach (n, [&] (std::size_t t) {
-    Record& r = tets_[t];
-    r.in = r.out = 0;
-    r.label = UNKNOWN;
-    for (int i = 0; i < 4; ++i)
-    {
-      const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
-      if (u != OUTSIDE_HULL && u < t)
-        continue;
-      const double cosine = vote (t, i);
-      const double weighed = cosine > 0 ? SAME_SIDE_WEIGHT * cosine : cosine;
-      r.vote[i] = static_cast<std::int16_t> (std::lrint (weighed * VOTE_ONE));
-      if (u != OUTSIDE_HULL)
-        tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r.vote[i];
-    }
-  });
+  // The tetrahedra are taken in blocks, whose spheres are computed once and kept while the block
+  // is voted; a neighbour's outside the block is computed again (the same arithmetic, the same
+  // sphere). The tetrahedra are numbered along a space-filling curve, so most neighbours are in
+  // the block, and no array of every sphere is written to memory and read back.
+  tbb::enumerable_thread_specific<std::vector<Sphere>> block_spheres;
+  parallelForEach ((n + VOTE_BLOCK - 1) / VOTE_BLOCK,
+                   [&] (std::size_t block) {
+                     const std::size_t first = block * VOTE_BLOCK, last = std::min (n, first + VOTE_BLOCK);
+                     std::vector<Sphere>& spheres = block_spheres.local ();
+                     spheres.resize (last - first);
+                     for (std::size_t t = first; t < last; ++t)
+                       spheres[t - first] = orthosphere (vertices (t), positions, weights);
+                     const auto sphereOf = [&] (std::size_t t) {
+                       return t >= first && t < last ? spheres[t - first]
+                                                     : orthosphere (vertices (t), positions, weights);
+                     };
+                     for (std::size_t t = first; t < last; ++t)
+                     {
+                       Record& r = tets_[t];
+                       r.in = r.out = 0;
+                       r.label = UNKNOWN;
+                       for (int i = 0; i < 4; ++i)
+                       {
+                         const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
+                         if (u != OUTSIDE_HULL && u < t)
+                           continue;
+                         const double cosine = vote (t, i, sphereOf);
+                         const double weighed = cosine > 0 ? SAME_SIDE_WEIGHT * cosine : cosine;
+                         r.vote[i] = static_cast<std::int16_t> (std::lrint (weighed * VOTE_ONE));
+                         if (u != OUTSIDE_HULL)
+                           tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r.vote[i];
+                       }
+                     }
+                   },
+                   1);
   // Where the flood starts, found here on all threads rather than by the flood's one.
   on_hull_ = indicesWhere (n, [&] (std::size_t t) { return adjacency.onHull (static_cast<std::uint32_t> (t)); });
 }
