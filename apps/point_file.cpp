@@ -2,6 +2,8 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "point_file.h"
 
+#include "obj_text.h"
+#include "off_text.h"
 #include "pcl_file_checks.h"
 #include "text_line.h"
 #include "xyz_text.h"
@@ -165,61 +167,24 @@ PointFile
 readOff (const std::string& path)
 {
   std::ifstream in = openText (path);
-  std::string line;
-  std::vector<double> numbers;
-  std::size_t number = 0;
-  // The next line with content, or failure at the end of the file.
-  const auto next = [&] (const char* what) {
-    while (std::getline (in, line))
-    {
-      ++number;
-      if (!parseNumbers (line, numbers))
-        fail (path, "line " + std::to_string (number) + ": not a number in " + what);
-      if (!numbers.empty ())
-        return;
-    }
-    fail (path, std::string ("ends before ") + what);
-  };
-  std::string header;
-  while (header.empty () && std::getline (in, line))
-  {
-    ++number;
-    std::istringstream (line.substr (0, line.find ('#'))) >> header;
-  }
-  if (header.size () < 3 || header.compare (header.size () - 3, 3, "OFF") != 0)
-    fail (path, "not an OFF file (no OFF header)");
-  // [ST][C][N][4][n]OFF: a vertex line is x y z [nx ny nz] [r g b [a]] [s t].
-  const std::string prefix = header.substr (0, header.size () - 3);
-  const bool with_normals = prefix.find ('N') != std::string::npos;
-  const bool with_colours = prefix.find ('C') != std::string::npos;
-  // The counts may follow the keyword on the header line.
-  std::istringstream rest (line.substr (line.find ("OFF") + 3));
-  double count = 0;
-  if (!(rest >> count))
-  {
-    next ("the vertex count");
-    count = numbers[0];
-  }
-  if (!(count >= 0 && count <= 4.0e9 && count == std::floor (count)))
-    fail (path, "bad vertex count");
+  const OffVertices read = readOffStream (in);
+  if (!read.error.empty ())
+    fail (path, read.error);
   PointFile file;
-  const auto reserve = static_cast<std::size_t> (std::min (count, 1.0e7));
-  file.points.reserve (reserve);
+  const std::size_t n = read.begin.size () - 1;
+  file.points.resize (n);
   std::vector<std::array<double, 4>> colours; // as written; bytes or fractions decided at the end
   bool has_alpha = true, bytes = false;
-  for (std::size_t i = 0; i < static_cast<std::size_t> (count); ++i)
+  for (std::size_t i = 0; i < n; ++i)
   {
-    next ("all vertices are read");
-    const std::size_t needed = 3 + (with_normals ? 3 : 0) + (with_colours ? 3 : 0);
-    if (numbers.size () < needed)
-      fail (path, "line " + std::to_string (number) + ": a vertex needs " + std::to_string (needed) + " numbers");
-    file.points.push_back ({numbers[0], numbers[1], numbers[2]});
-    if (with_normals)
+    const double* numbers = &read.values[read.begin[i]];
+    file.points[i] = {numbers[0], numbers[1], numbers[2]};
+    if (read.normals)
       file.attributes.normals.push_back ({float (numbers[3]), float (numbers[4]), float (numbers[5])});
-    if (with_colours)
+    if (read.colours)
     {
-      const double* c = numbers.data () + (with_normals ? 6 : 3);
-      const bool alpha = numbers.size () >= needed + 1;
+      const double* c = numbers + (read.normals ? 6 : 3);
+      const bool alpha = read.begin[i + 1] - read.begin[i] >= read.needed + 1;
       has_alpha = has_alpha && alpha;
       colours.push_back ({c[0], c[1], c[2], alpha ? c[3] : 1.0});
       bytes = bytes || c[0] > 1 || c[1] > 1 || c[2] > 1;
@@ -227,7 +192,7 @@ readOff (const std::string& path)
   }
   for (const auto& c : colours)
     file.attributes.colours.push_back (colourOf (c.data (), has_alpha, bytes));
-  file.attributes.alpha = with_colours && has_alpha;
+  file.attributes.alpha = read.colours && has_alpha;
   return file;
 }
 
@@ -235,45 +200,24 @@ PointFile
 readObj (const std::string& path)
 {
   std::ifstream in = openText (path);
+  std::error_code unknown; // not a regular file: no room is made ahead
+  const std::uintmax_t bytes = std::filesystem::file_size (path, unknown);
+  ObjVertices read = readObjStream (in, unknown ? 0 : bytes);
+  if (!read.error.empty ())
+    fail (path, read.error);
   PointFile file;
-  std::vector<std::array<double, 3>> colours;
-  std::vector<std::array<float, 3>> normals;
-  bool every_vertex_coloured = true;
-  std::vector<double> numbers;
-  std::string line;
-  for (std::size_t number = 1; std::getline (in, line); ++number)
+  file.points.resize (read.points.size () / 3);
+  for (std::size_t i = 0; i < file.points.size (); ++i)
+    file.points[i] = {read.points[3 * i], read.points[3 * i + 1], read.points[3 * i + 2]};
+  if (read.every_vertex_coloured && !file.points.empty ())
   {
-    const std::size_t start = line.find_first_not_of (" \t");
-    const std::size_t end = line.find_first_of (" \t", start);
-    if (start == std::string::npos || end == std::string::npos)
-      continue;
-    const std::string keyword = line.substr (start, end - start);
-    if (keyword == "vn")
-    {
-      if (!parseNumbers (line.substr (end), numbers) || numbers.size () != 3)
-        fail (path, "line " + std::to_string (number) + ": a normal needs 3 numbers");
-      normals.push_back ({float (numbers[0]), float (numbers[1]), float (numbers[2])});
-      continue;
-    }
-    if (keyword != "v")
-      continue;
-    if (!parseNumbers (line.substr (end), numbers) || numbers.size () < 3 || numbers.size () > 7)
-      fail (path, "line " + std::to_string (number) + ": a vertex needs 3 coordinates");
-    file.points.push_back ({numbers[0], numbers[1], numbers[2]});
-    every_vertex_coloured = every_vertex_coloured && numbers.size () == 6; // "v x y z r g b"
-    if (every_vertex_coloured)
-      colours.push_back ({numbers[3], numbers[4], numbers[5]});
+    const bool bytes_given = std::any_of (read.colours.begin (), read.colours.end (), [] (double c) { return c > 1; });
+    for (std::size_t i = 0; i < file.points.size (); ++i)
+      file.attributes.colours.push_back (colourOf (&read.colours[3 * i], false, bytes_given));
   }
-  if (every_vertex_coloured && !file.points.empty ())
-  {
-    bool bytes = false;
-    for (const auto& c : colours)
-      bytes = bytes || c[0] > 1 || c[1] > 1 || c[2] > 1;
-    for (const auto& c : colours)
-      file.attributes.colours.push_back (colourOf (c.data (), false, bytes));
-  }
-  if (normals.size () == file.points.size ())
-    file.attributes.normals = std::move (normals);
+  if (read.normals.size () == read.points.size ())
+    for (std::size_t i = 0; i < file.points.size (); ++i)
+      file.attributes.normals.push_back ({read.normals[3 * i], read.normals[3 * i + 1], read.normals[3 * i + 2]});
   return file;
 }
 

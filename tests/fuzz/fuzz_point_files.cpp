@@ -3,9 +3,11 @@
 //
 // libFuzzer: arbitrary bytes as each input format of the command-line tool. A file either reads
 // or gives a FileError; anything else (a crash, another exception) is a finding. The bytes are
-// also read as a .xyz file's text in tasks of a few bytes, and from a stream in windows of a few
-// bytes, which must give what a reading line by line gives.
+// also read as a .xyz, .obj and .off file's text in tasks of a few bytes, and from a stream in
+// windows of a few bytes, which must give what a reading line by line gives.
 #include "point_file.h"
+#include "support/obj_reference.h"
+#include "support/off_reference.h"
 #include "support/xyz_reference.h"
 
 #include <pcl/console/print.h>
@@ -30,6 +32,15 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   std::istringstream stream (bytes);
   if (!pcl_wrap::test::sameXyzTables (pcl_wrap::apps::parseXyzText (bytes, 1 + data[0] % 32), reference) ||
       !pcl_wrap::test::sameXyzTables (pcl_wrap::apps::readXyzStream (stream, 0, 1 + data[0] % 16), reference))
+    __builtin_trap ();
+  const pcl_wrap::apps::ObjVertices obj = pcl_wrap::test::referenceObjVertices (bytes);
+  std::istringstream obj_stream (bytes);
+  if (!pcl_wrap::test::sameObjVertices (pcl_wrap::apps::parseObjText (bytes, 1 + data[0] % 32), obj) ||
+      !pcl_wrap::test::sameObjVertices (pcl_wrap::apps::readObjStream (obj_stream, 0, 1 + data[0] % 16), obj))
+    __builtin_trap ();
+  std::istringstream off_stream (bytes);
+  if (!pcl_wrap::test::sameOffVertices (pcl_wrap::apps::readOffStream (off_stream, 1 + data[0] % 16, 1 + data[0] % 32),
+                                        pcl_wrap::test::referenceOffVertices (bytes)))
     __builtin_trap ();
   const std::string path = stem + EXTENSIONS[data[0] % 5];
   std::ofstream (path, std::ios::binary).write (reinterpret_cast<const char*> (data + 1), std::streamsize (size - 1));
