@@ -131,15 +131,7 @@ ObjParser::take ()
 ObjVertices
 readObjStream (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes)
 {
-  ObjParser parser;
-  readInWindows (in, bytes, window_bytes, [&] (const char* first, const char* last, double share) {
-    if (!parser.parse (first, last))
-      return false;
-    if (share > 0)
-      parser.reserveFor (share);
-    return true;
-  });
-  return parser.take ();
+  return readWithParser (ObjParser (), in, bytes, window_bytes);
 }
 
 ObjVertices

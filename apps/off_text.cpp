@@ -82,10 +82,9 @@ public:
   }
 
 private:
+  /** The error; readOffStream() then empties the rest. */
   bool failAt (std::size_t line, const std::string& problem)
   {
-    out_.values = {};
-    out_.begin = {};
     out_.error = "line " + std::to_string (line + 1) + ": " + problem;
     return false;
   }

@@ -51,6 +51,15 @@ fail (const std::string& path, const std::string& problem)
   throw FileError (path + ": " + problem);
 }
 
+/** The length of the file at \a path, or 0 where it is not known (not a regular file). */
+std::uintmax_t
+knownLength (const std::string& path)
+{
+  std::error_code unknown;
+  const std::uintmax_t bytes = std::filesystem::file_size (path, unknown);
+  return unknown ? 0 : bytes;
+}
+
 std::ifstream
 openText (const std::string& path)
 {
@@ -99,9 +108,7 @@ PointFile
 readXyz (const std::string& path, bool weights_column)
 {
   std::ifstream in = openText (path);
-  std::error_code unknown; // not a regular file: no room is made ahead
-  const std::uintmax_t bytes = std::filesystem::file_size (path, unknown);
-  XyzTable table = readXyzStream (in, unknown ? 0 : bytes);
+  XyzTable table = readXyzStream (in, knownLength (path));
   if (!table.error.empty ())
     fail (path, table.error);
   PointFile file;
@@ -200,9 +207,7 @@ PointFile
 readObj (const std::string& path)
 {
   std::ifstream in = openText (path);
-  std::error_code unknown; // not a regular file: no room is made ahead
-  const std::uintmax_t bytes = std::filesystem::file_size (path, unknown);
-  ObjVertices read = readObjStream (in, unknown ? 0 : bytes);
+  ObjVertices read = readObjStream (in, knownLength (path));
   if (!read.error.empty ())
     fail (path, read.error);
   PointFile file;

@@ -89,4 +89,22 @@ void
 readInWindows (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes,
                const std::function<bool (const char* first, const char* last, double share)>& parse);
 
+/** \brief What \a parser reads of a stream's text, handed to it a window at a time
+  * (readInWindows()): its parse (first, last) gets the whole lines, its reserveFor (share) is told
+  * what share of a text of known length the first window was, and its take () gives the result.
+  * \param[in] bytes the stream's length if known (0 if not) */
+template <class Parser>
+auto
+readWithParser (Parser parser, std::istream& in, std::uintmax_t bytes, std::size_t window_bytes)
+{
+  readInWindows (in, bytes, window_bytes, [&] (const char* first, const char* last, double share) {
+    if (!parser.parse (first, last))
+      return false;
+    if (share > 0)
+      parser.reserveFor (share);
+    return true;
+  });
+  return parser.take ();
+}
+
 } // namespace pcl_wrap::apps

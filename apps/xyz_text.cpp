@@ -98,6 +98,12 @@ XyzParser::parse (const char* first, const char* last)
   return true;
 }
 
+void
+XyzParser::reserveFor (double share)
+{
+  table_.values.reserve (std::size_t (double (table_.values.size ()) / share * 1.02) + 64);
+}
+
 XyzTable
 XyzParser::take ()
 {
@@ -110,15 +116,7 @@ XyzParser::take ()
 XyzTable
 readXyzStream (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes)
 {
-  XyzParser parser;
-  readInWindows (in, bytes, window_bytes, [&] (const char* first, const char* last, double share) {
-    if (!parser.parse (first, last))
-      return false;
-    if (share > 0)
-      parser.reserve (std::size_t (double (parser.table ().values.size ()) / share * 1.02) + 64);
-    return true;
-  });
-  return parser.take ();
+  return readWithParser (XyzParser (), in, bytes, window_bytes);
 }
 
 XyzTable

@@ -34,11 +34,9 @@ public:
     * '\n'). False once a line has failed: later pieces are then not read. */
   bool parse (const char* first, const char* last);
 
-  /** \brief Room for this many values in all, so that a large table is not copied as it grows. */
-  void reserve (std::size_t values) { table_.values.reserve (values); }
-
-  /** \brief What was read so far. */
-  const XyzTable& table () const { return table_; }
+  /** \brief Room for the table of a text of which \a share has been read, so that a large table is
+    * not copied as it grows. */
+  void reserveFor (double share);
 
   /** \brief What was read; the parser is empty after. */
   XyzTable take ();
