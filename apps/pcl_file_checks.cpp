@@ -3,7 +3,7 @@
 #include "pcl_file_checks.h"
 
 #include "point_file.h"
-#include "text_line.h"
+#include "text_pieces.h"
 
 #include <cmath>
 #include <cstdint>
@@ -18,19 +18,19 @@ namespace pcl_wrap::apps
 namespace
 {
 
-/** PCL's ASCII readers turn a token that is not a number into NaN (PLY) or 0 (PCD), silently:
-  * every token of the data from \a start on must be a number ("nan" and "inf" written out are). */
+/** PCL's ASCII PLY reader turns a token that is not a number into NaN, silently: every token of
+  * the data from \a start on must be a number ("nan" and "inf" written out are). */
 template <class Fail>
 void
 checkAsciiData (std::ifstream& in, std::uint64_t start, const Fail& bad)
 {
   in.clear ();
+  in.seekg (0, std::ios::end);
+  const auto end = static_cast<std::uint64_t> (in.tellg ());
   in.seekg (std::streamoff (start));
-  std::vector<double> numbers;
-  std::string line;
-  for (std::size_t number = 1; std::getline (in, line); ++number)
-    if (!parseNumbers (line, numbers))
-      bad ("data line " + std::to_string (number) + ": not a number");
+  const std::size_t line = firstLineNotNumbers (in, end - start);
+  if (line != NO_LINE)
+    bad ("data line " + std::to_string (line + 1) + ": not a number");
 }
 
 /** PCL's PCD reader goes on parsing header lines after DATA, skipping blank lines and comments,
@@ -150,9 +150,7 @@ checkPcdFile (const std::string& path)
         points > 0xffffffffULL / point_size || std::uint64_t (sizes[1]) != points * point_size)
       bad ("compressed data does not match its header");
   }
-  else if (data == "ascii")
-    checkAsciiData (in, start, bad);
-  else
+  else if (data != "ascii") // ASCII data is checked as it is read (readPcdAsciiData())
     bad ("unknown DATA '" + data + "'");
 }
 

@@ -10,7 +10,8 @@ namespace pcl_wrap::apps
 {
 
 /** \brief PCL's PCD reader trusts the header and corrupts memory on a malformed one (found by
-  * fuzzing): the header checked strictly, and the data size it declares against the file.
+  * fuzzing): the header checked strictly, and the size of binary data it declares against the
+  * file (ASCII data is checked as it is read: readPcdAsciiData()).
   * \throws FileError where the file is malformed */
 void
 checkPcdFile (const std::string& path);

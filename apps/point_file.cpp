@@ -4,6 +4,7 @@
 
 #include "obj_text.h"
 #include "off_text.h"
+#include "pcd_ascii.h"
 #include "pcl_file_checks.h"
 #include "text_line.h"
 #include "xyz_text.h"
@@ -257,6 +258,27 @@ pointsOf (const pcl::PCLPointCloud2& cloud, const std::string& path, const std::
   }
 }
 
+/** A PCD file into \a cloud: the header by PCL's reader, once checked; ASCII data by
+  * readPcdAsciiData() on all threads, binary data by PCL's reader. PCL's status. */
+int
+readPcd (const std::string& path, pcl::PCLPointCloud2& cloud, Eigen::Vector4f& origin, Eigen::Quaternionf& orientation)
+{
+  checkPcdFile (path);
+  pcl::PCDReader reader;
+  int version = 0, data_type = 0;
+  unsigned int data_start = 0;
+  const int status = reader.readHeader (path, cloud, origin, orientation, version, data_type, data_start);
+  if (status < 0 || data_type != 0)
+    return status < 0 ? status : reader.read (path, cloud, origin, orientation, version);
+  std::ifstream in (path, std::ios::binary);
+  in.seekg (std::streamoff (data_start));
+  const std::uintmax_t length = knownLength (path);
+  const std::string error = readPcdAsciiData (in, length > data_start ? length - data_start : 0, cloud);
+  if (!error.empty ())
+    fail (path, "malformed PCD file: " + error);
+  return 0;
+}
+
 PointFile
 readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
 {
@@ -272,10 +294,12 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
   try
   {
     if (pcd)
-      checkPcdFile (path);
+      status = readPcd (path, cloud, origin, orientation);
     else
+    {
       checkPlyFile (path);
-    status = pcd ? pcl::io::loadPCDFile (path, cloud, origin, orientation) : pcl::io::loadPLYFile (path, cloud);
+      status = pcl::io::loadPLYFile (path, cloud);
+    }
   }
   catch (const FileError&)
   {

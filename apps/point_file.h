@@ -32,7 +32,8 @@ struct PointFile
 };
 
 /** \brief Reads the points of a file, by extension:
-  * - .pcd and .ply through PCL's readers, every field kept (PointAttributes);
+  * - .pcd and .ply through PCL's readers, every field kept (PointAttributes), but an ASCII .pcd
+  *   file's data, read by readPcdAsciiData();
   * - .xyz and .txt: lines of x y z and further columns, as many on every line (blank lines and
   *   # comments skipped). Three further columns are normals when each row's are of unit length,
   *   colours when they are whole numbers from 0 to 255; six are both, in either order; any other

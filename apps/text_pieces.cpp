@@ -11,20 +11,10 @@
 
 namespace pcl_wrap::apps
 {
-namespace
-{
 
-/** What separates tokens: std::isspace in the "C" locale, as for the streams of parseNumbers(). */
-bool
-isSpace (char c)
-{
-  return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
-}
-
-/** The number that is the whole token [first, last), as parseNumbers() reads it; false if it
-  * reads none. A plain decimal is read with std::from_chars, which rounds correctly as strtod
-  * does and is several times faster; anything else (a sign '+', hexadecimal, inf, nan, out of
-  * range, a byte no number has) is handed to parseNumbers() itself. */
+// A plain decimal is read with std::from_chars, which rounds correctly as strtod does and is
+// several times faster; anything else (a sign '+', hexadecimal, inf, nan, out of range, a byte no
+// number has) is handed to parseNumbers() itself.
 bool
 tokenValue (const char* first, const char* last, double& value)
 {
@@ -42,35 +32,21 @@ tokenValue (const char* first, const char* last, double& value)
   return true;
 }
 
-} // namespace
-
 bool
 appendNumbers (const char* first, const char* last, std::vector<double>& out, std::size_t& count)
 {
-  if (const void* hash = std::memchr (first, '#', std::size_t (last - first)))
-    last = static_cast<const char*> (hash);
   const std::size_t before = out.size ();
-  count = 0;
-  for (const char* p = first;;)
-  {
-    while (p < last && isSpace (*p))
-      ++p;
-    if (p == last)
-      return true;
-    const char* end = p;
-    while (end < last && !isSpace (*end))
-      ++end;
+  const bool numbers = forEachToken (first, last, [&] (const char* token, const char* end) {
     double value;
-    if (!tokenValue (p, end, value))
-    {
-      out.resize (before);
-      count = 0;
+    if (!tokenValue (token, end, value))
       return false;
-    }
     out.push_back (value);
-    ++count;
-    p = end;
-  }
+    return true;
+  });
+  if (!numbers)
+    out.resize (before);
+  count = out.size () - before;
+  return numbers;
 }
 
 std::vector<std::pair<std::size_t, std::size_t>>
@@ -90,6 +66,35 @@ wholeLinePieces (std::string_view text, std::size_t chunk_bytes)
     at = end;
   }
   return pieces;
+}
+
+std::size_t
+firstLineNotNumbers (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes, std::size_t chunk_bytes)
+{
+  std::size_t lines = 0, failing = NO_LINE;
+  readInWindows (in, bytes, window_bytes, [&] (const char* first, const char* last, double) {
+    const std::vector<TextPiece> pieces =
+        readPieces<TextPiece> (std::string_view (first, std::size_t (last - first)), chunk_bytes,
+                               [] (std::string_view text, TextPiece& piece) {
+                                 readLines (text, piece, [] (const char* line, const char* end) {
+                                   return forEachToken (line, end, [] (const char* token, const char* token_end) {
+                                     double value;
+                                     return tokenValue (token, token_end, value);
+                                   });
+                                 });
+                               });
+    for (const TextPiece& piece : pieces)
+    {
+      if (piece.error_line != NO_LINE)
+      {
+        failing = lines + piece.error_line;
+        return false;
+      }
+      lines += piece.lines;
+    }
+    return true;
+  });
+  return failing;
 }
 
 void

@@ -17,6 +17,43 @@
 namespace pcl_wrap::apps
 {
 
+/** \brief What separates tokens: std::isspace in the "C" locale, as for the streams of
+  * parseNumbers(). */
+inline bool
+isTokenSpace (char c)
+{
+  return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+}
+
+/** \brief Calls \a token (first, last) on each whitespace-separated token of the line [first, last)
+  * (no '\n' in it) in turn, a '#' comment cut off, as parseNumbers() cuts a line, until one
+  * returns false; returns whether none did. */
+template <class Token>
+bool
+forEachToken (const char* first, const char* last, const Token& token)
+{
+  if (const void* hash = std::memchr (first, '#', std::size_t (last - first)))
+    last = static_cast<const char*> (hash);
+  for (const char* p = first;;)
+  {
+    while (p < last && isTokenSpace (*p))
+      ++p;
+    if (p == last)
+      return true;
+    const char* end = p;
+    while (end < last && !isTokenSpace (*end))
+      ++end;
+    if (!token (p, end))
+      return false;
+    p = end;
+  }
+}
+
+/** \brief The number that is the whole token [first, last) (not empty, no whitespace in it), as
+  * parseNumbers() reads a token, bit for bit; false if it reads none. */
+bool
+tokenValue (const char* first, const char* last, double& value);
+
 /** \brief The numbers of the line [first, last) (no '\n' in it), appended to \a out, as
   * parseNumbers() reads them: a '#' comment cut off, whitespace-separated tokens, each read as
   * std::strtod reads it, bit for bit. False, with \a out as it was, where parseNumbers() returns
@@ -88,6 +125,14 @@ readPieces (std::string_view text, std::size_t chunk_bytes, const Read& read)
 void
 readInWindows (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes,
                const std::function<bool (const char* first, const char* last, double share)>& parse);
+
+/** \brief The first line, counted from 0, of a stream's text with a token that is not a number
+  * as parseNumbers() reads it (a '#' comment cut off), or NO_LINE: read a window at a time
+  * (readInWindows()), the lines of a window on all threads.
+  * \param[in] bytes the stream's length if known (0 if not) */
+std::size_t
+firstLineNotNumbers (std::istream& in, std::uintmax_t bytes, std::size_t window_bytes = std::size_t (1) << 25,
+                     std::size_t chunk_bytes = std::size_t (1) << 18);
 
 /** \brief What \a parser reads of a stream's text, handed to it a window at a time
   * (readInWindows()): its parse (first, last) gets the whole lines, its reserveFor (share) is told

@@ -4,12 +4,15 @@
 // libFuzzer: arbitrary bytes as each input format of the command-line tool. A file either reads
 // or gives a FileError; anything else (a crash, another exception) is a finding. The bytes are
 // also read as a .xyz, .obj and .off file's text in tasks of a few bytes, and from a stream in
-// windows of a few bytes, which must give what a reading line by line gives.
+// windows of a few bytes, which must give what a reading line by line gives; and as an ASCII PCD
+// file's data, which must read the same in windows and tasks of a few bytes as in large ones.
+#include "pcd_ascii.h"
 #include "point_file.h"
 #include "support/obj_reference.h"
 #include "support/off_reference.h"
 #include "support/xyz_reference.h"
 
+#include <pcl/common/io.h>
 #include <pcl/console/print.h>
 
 #include <cstdint>
@@ -18,6 +21,36 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+
+namespace
+{
+
+/** A cloud of four points whose fields take a float, an unsigned byte, a padding float and two
+  * doubles a line, as PCL's header reader would leave it. */
+pcl::PCLPointCloud2
+pcdCloud ()
+{
+  pcl::PCLPointCloud2 cloud;
+  const auto field = [&] (const char* name, std::uint8_t type, std::uint32_t count) {
+    pcl::PCLPointField f;
+    f.name = name;
+    f.datatype = type;
+    f.count = count;
+    f.offset = cloud.point_step;
+    cloud.point_step += count * static_cast<std::uint32_t> (pcl::getFieldSize (type));
+    cloud.fields.push_back (f);
+  };
+  field ("x", pcl::PCLPointField::FLOAT32, 1);
+  field ("i", pcl::PCLPointField::UINT8, 1);
+  field ("_", pcl::PCLPointField::FLOAT32, 1);
+  field ("n", pcl::PCLPointField::FLOAT64, 2);
+  cloud.width = 4;
+  cloud.height = 1;
+  cloud.data.resize (4 * cloud.point_step);
+  return cloud;
+}
+
+} // namespace
 
 extern "C" int
 LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
@@ -41,6 +74,12 @@ LLVMFuzzerTestOneInput (const std::uint8_t* data, std::size_t size)
   std::istringstream off_stream (bytes);
   if (!pcl_wrap::test::sameOffVertices (pcl_wrap::apps::readOffStream (off_stream, 1 + data[0] % 16, 1 + data[0] % 32),
                                         pcl_wrap::test::referenceOffVertices (bytes)))
+    __builtin_trap ();
+  pcl::PCLPointCloud2 in_windows = pcdCloud (), at_once = pcdCloud ();
+  std::istringstream pcd_stream (bytes), pcd_again (bytes);
+  if (pcl_wrap::apps::readPcdAsciiData (pcd_stream, 0, in_windows, 1 + data[0] % 16, 1 + data[0] % 32) !=
+          pcl_wrap::apps::readPcdAsciiData (pcd_again, bytes.size (), at_once) ||
+      in_windows.data != at_once.data)
     __builtin_trap ();
   const std::string path = stem + EXTENSIONS[data[0] % 5];
   std::ofstream (path, std::ios::binary).write (reinterpret_cast<const char*> (data + 1), std::streamsize (size - 1));
