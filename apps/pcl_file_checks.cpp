@@ -154,8 +154,8 @@ checkPcdFile (const std::string& path)
     bad ("unknown DATA '" + data + "'");
 }
 
-void
-checkPlyFile (const std::string& path)
+bool
+checkPlyHeader (const std::string& path)
 {
   const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); };
   std::ifstream in (path, std::ios::binary);
@@ -212,8 +212,20 @@ checkPlyFile (const std::string& path)
       bad ("the header declares more data than the file holds");
     available -= count * least;
   }
-  if (format == "ascii")
-    checkAsciiData (in, start, bad);
+  return format == "ascii";
+}
+
+void
+checkPlyFile (const std::string& path)
+{
+  if (!checkPlyHeader (path))
+    return;
+  std::ifstream in (path, std::ios::binary);
+  std::string line;
+  while (std::getline (in, line) && line.compare (0, 10, "end_header") != 0)
+  {}
+  checkAsciiData (in, static_cast<std::uint64_t> (in.tellg ()),
+                  [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); });
 }
 
 } // namespace pcl_wrap::apps

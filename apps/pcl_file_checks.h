@@ -17,7 +17,14 @@ void
 checkPcdFile (const std::string& path);
 
 /** \brief PCL's PLY reader allocates what the header declares before reading the data (2e9
-  * vertices cost 23 GB): the declared elements checked to fit in the file.
+  * vertices cost 23 GB): the declared elements checked to fit in the file. Returns whether the
+  * data is ASCII.
+  * \throws FileError where the header is malformed */
+bool
+checkPlyHeader (const std::string& path);
+
+/** \brief checkPlyHeader(), and for ASCII data, every token of it checked to be a number: PCL's
+  * reader turns one that is not into NaN.
   * \throws FileError where the file is malformed */
 void
 checkPlyFile (const std::string& path);

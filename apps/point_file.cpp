@@ -5,6 +5,7 @@
 #include "obj_text.h"
 #include "off_text.h"
 #include "pcd_ascii.h"
+#include "ply_ascii.h"
 #include "pcl_file_checks.h"
 #include "text_line.h"
 #include "xyz_text.h"
@@ -279,6 +280,30 @@ readPcd (const std::string& path, pcl::PCLPointCloud2& cloud, Eigen::Vector4f& o
   return 0;
 }
 
+/** A PLY file into \a cloud: the vertices of an ASCII file with a plain header
+  * (plainAsciiPlyLayout()) on all threads, laid out as PCL's reader lays them out; any other file
+  * by PCL's reader, once checked. PCL's status. */
+int
+readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
+{
+  if (checkPlyHeader (path))
+  {
+    std::ifstream in (path, std::ios::binary);
+    if (std::optional<PlyVertexLayout> layout = plainAsciiPlyLayout (in))
+    {
+      cloud = std::move (layout->cloud);
+      const std::uintmax_t length = knownLength (path);
+      const std::string error = readAsciiRows (in, length > layout->data_start ? length - layout->data_start : 0,
+                                               layout->values, cloud.point_step, cloud.width, true, cloud.data);
+      if (!error.empty ())
+        fail (path, "malformed PLY file: " + error);
+      return 0;
+    }
+    checkPlyFile (path);
+  }
+  return pcl::io::loadPLYFile (path, cloud);
+}
+
 PointFile
 readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
 {
@@ -296,10 +321,7 @@ readWithPcl (const std::string& path, bool pcd, const std::string& weight_field)
     if (pcd)
       status = readPcd (path, cloud, origin, orientation);
     else
-    {
-      checkPlyFile (path);
-      status = pcl::io::loadPLYFile (path, cloud);
-    }
+      status = readPly (path, cloud);
   }
   catch (const FileError&)
   {

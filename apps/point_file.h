@@ -32,8 +32,9 @@ struct PointFile
 };
 
 /** \brief Reads the points of a file, by extension:
-  * - .pcd and .ply through PCL's readers, every field kept (PointAttributes), but an ASCII .pcd
-  *   file's data, read by readPcdAsciiData();
+  * - .pcd and .ply as PCL's readers read them, every field kept (PointAttributes): the data of
+  *   an ASCII .pcd file, and the vertices of an ASCII .ply file with a plain header, read on all
+  *   threads (readPcdAsciiData(), plainAsciiPlyLayout(), readAsciiRows());
   * - .xyz and .txt: lines of x y z and further columns, as many on every line (blank lines and
   *   # comments skipped). Three further columns are normals when each row's are of unit length,
   *   colours when they are whole numbers from 0 to 255; six are both, in either order; any other
