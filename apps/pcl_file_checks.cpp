@@ -112,7 +112,7 @@ checkPcdFile (const std::string& path)
   if (n == 0 || n > 1024 || header["SIZE"].size () != n || header["TYPE"].size () != n ||
       (header.count ("COUNT") && header["COUNT"].size () != n))
     bad ("FIELDS, SIZE, TYPE and COUNT differ in length");
-  std::uint64_t point_size = 0;
+  std::uint64_t point_size = 0, values = 0; // bytes and numbers a point
   for (std::size_t i = 0; i < n; ++i)
   {
     const unsigned long size = number (header["SIZE"][i], 8);
@@ -122,6 +122,7 @@ checkPcdFile (const std::string& path)
         (type == "F" && size < 4) || count == 0)
       bad ("field " + fields[i] + " has a bad SIZE, TYPE or COUNT");
     point_size += size * count;
+    values += count;
   }
   if (header["WIDTH"].size () != 1 || header["HEIGHT"].size () != 1 || header["POINTS"].size () != 1 ||
       header["DATA"].size () != 1)
@@ -150,7 +151,14 @@ checkPcdFile (const std::string& path)
         points > 0xffffffffULL / point_size || std::uint64_t (sizes[1]) != points * point_size)
       bad ("compressed data does not match its header");
   }
-  else if (data != "ascii") // ASCII data is checked as it is read (readPcdAsciiData())
+  else if (data == "ascii")
+  {
+    // Its tokens are checked as they are read (readPcdAsciiData()); PCL's header reader sizes the
+    // cloud before, and a number takes two bytes at least (a digit and a space or line end).
+    if (points > (available + 1) / (2 * values))
+      bad ("ASCII data shorter than " + std::to_string (points) + " points");
+  }
+  else
     bad ("unknown DATA '" + data + "'");
 }
 
