@@ -187,7 +187,7 @@ TEST (PcdAscii, WrongDataNamesItsLine)
       {xyz + "0 0 0\n1 x 0\n0 1 0\n", "data line 2: not a number"},
       {xyz + "0 0 0\n\n1 0\n0 1 0\n", "data line 3: 2 numbers where a point has 3"},
       {xyz + "0 0 0\n1 0 0 5\n0 1 0\n", "data line 2: 4 numbers where a point has 3"},
-      {xyz + "0 0 0\n1 0 0\n", "2 points where 3 are declared"},
+      {xyz + "0 0 0\n1 0 0\n# as long as three points\n", "2 points where 3 are declared"},
       {xyz + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n", "data line 4: more points than the 3 declared"},
       {labelled + "0 0 0 1\n1 0 0 1.5\n", "data line 2: '1.5' does not fit field label"},
       {labelled + "0 0 0 256\n1 0 0 1\n", "data line 1: '256' does not fit field label"},
