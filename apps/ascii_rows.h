@@ -29,12 +29,11 @@ struct RowValue
   * the rows, each of one number per value of \a values, stored at row * \a point_step (\a data
   * holds \a rows points): the float nearest to the number where read as a float, an integer
   * type's whole number that fits it (a BOOL's, 0 or 1), stored as read or, from an integer type,
-  * as a float. Lines with no number are skipped. Further lines with
-  * numbers are an error, unless \a more_follow (a PLY file's other elements), where their tokens
-  * need only be numbers. Wrong where a token is not a number, a row has a different count of
-  * numbers or a number that does not fit its type, or there are fewer rows (or, without \a
-  * more_follow, more): the message names the first such data line, counted from 1, where there
-  * is one.
+  * as a float. Lines with no number are skipped. Further lines with numbers are an error, unless
+  * \a more_follow (a PLY file's other elements), where their tokens need only be numbers. Wrong
+  * where a token is not a number, a row has a different count of numbers or a number that does
+  * not fit its type, or there are fewer rows (or, without \a more_follow, more): the message
+  * names the first such data line, counted from 1, where there is one.
   * \param[in] bytes the data's length if known (0 if not) */
 std::string
 readAsciiRows (std::istream& in, std::uintmax_t bytes, const std::vector<RowValue>& values, std::size_t point_step,
