@@ -2,8 +2,11 @@
 // Copyright (C) 2026 the pcl_wrap authors
 #include "pcl_file_checks.h"
 
+#include "ply_ascii.h"
 #include "point_file.h"
 #include "text_pieces.h"
+
+#include <pcl/common/io.h>
 
 #include <cmath>
 #include <cstdint>
@@ -168,10 +171,6 @@ checkPlyHeader (const std::string& path)
   const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); };
   std::ifstream in (path, std::ios::binary);
   std::string line, format;
-  static const std::map<std::string, unsigned> SIZES = {
-      {"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2},
-      {"uint16", 2}, {"int", 4}, {"uint", 4}, {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4},
-      {"double", 8}, {"float64", 8}};
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elements; // count, least bytes per item
   if (!std::getline (in, line) || line.substr (0, 3) != "ply")
     bad ("no ply magic");
@@ -196,9 +195,11 @@ checkPlyHeader (const std::string& path)
       words >> type;
       if (type == "list")
         words >> type; // the item count's type: the least a list takes
-      if (elements.empty () || !SIZES.count (type))
+      const std::uint8_t field_type = plyFieldType (type);
+      if (elements.empty () || field_type == 0)
         bad ("bad property line");
-      elements.back ().second += format == "ascii" ? 2 : SIZES.at (type); // ascii: a digit and a space
+      // ASCII: a digit and a space.
+      elements.back ().second += format == "ascii" ? 2 : pcl::getFieldSize (field_type);
     }
   }
   if (!in)

@@ -14,23 +14,6 @@ namespace pcl_wrap::apps
 namespace
 {
 
-/** The PCL field type of a PLY scalar type's name, or 0. */
-std::uint8_t
-fieldType (const std::string& type)
-{
-  static const std::map<std::string, std::uint8_t> TYPES = {
-      {"char", pcl::PCLPointField::INT8},      {"int8", pcl::PCLPointField::INT8},
-      {"uchar", pcl::PCLPointField::UINT8},    {"uint8", pcl::PCLPointField::UINT8},
-      {"short", pcl::PCLPointField::INT16},    {"int16", pcl::PCLPointField::INT16},
-      {"ushort", pcl::PCLPointField::UINT16},  {"uint16", pcl::PCLPointField::UINT16},
-      {"int", pcl::PCLPointField::INT32},      {"int32", pcl::PCLPointField::INT32},
-      {"uint", pcl::PCLPointField::UINT32},    {"uint32", pcl::PCLPointField::UINT32},
-      {"float", pcl::PCLPointField::FLOAT32},  {"float32", pcl::PCLPointField::FLOAT32},
-      {"double", pcl::PCLPointField::FLOAT64}, {"float64", pcl::PCLPointField::FLOAT64}};
-  const auto found = TYPES.find (type);
-  return found == TYPES.end () ? 0 : found->second;
-}
-
 /** Appends a field as PCL's reader does: at the end of the point. */
 void
 appendField (pcl::PCLPointCloud2& cloud, const std::string& name, std::uint8_t type)
@@ -45,6 +28,22 @@ appendField (pcl::PCLPointCloud2& cloud, const std::string& name, std::uint8_t t
 }
 
 } // namespace
+
+std::uint8_t
+plyFieldType (const std::string& type)
+{
+  static const std::map<std::string, std::uint8_t> TYPES = {
+      {"char", pcl::PCLPointField::INT8},      {"int8", pcl::PCLPointField::INT8},
+      {"uchar", pcl::PCLPointField::UINT8},    {"uint8", pcl::PCLPointField::UINT8},
+      {"short", pcl::PCLPointField::INT16},    {"int16", pcl::PCLPointField::INT16},
+      {"ushort", pcl::PCLPointField::UINT16},  {"uint16", pcl::PCLPointField::UINT16},
+      {"int", pcl::PCLPointField::INT32},      {"int32", pcl::PCLPointField::INT32},
+      {"uint", pcl::PCLPointField::UINT32},    {"uint32", pcl::PCLPointField::UINT32},
+      {"float", pcl::PCLPointField::FLOAT32},  {"float32", pcl::PCLPointField::FLOAT32},
+      {"double", pcl::PCLPointField::FLOAT64}, {"float64", pcl::PCLPointField::FLOAT64}};
+  const auto found = TYPES.find (type);
+  return found == TYPES.end () ? 0 : found->second;
+}
 
 std::optional<PlyVertexLayout>
 plainAsciiPlyLayout (std::istream& in)
@@ -90,7 +89,7 @@ plainAsciiPlyLayout (std::istream& in)
     else if (keyword == "property")
     {
       words >> type >> name;
-      const std::uint8_t field_type = fieldType (type);
+      const std::uint8_t field_type = plyFieldType (type);
       if (field_type == 0 || name.empty ())
         return std::nullopt; // a list, or no name
       const bool byte = field_type == pcl::PCLPointField::UINT8;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <istream>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace pcl_wrap::apps
@@ -22,6 +23,11 @@ struct PlyVertexLayout
   std::vector<RowValue> values; ///< per property of a vertex
   std::uint64_t data_start = 0; ///< the first byte after the header
 };
+
+/** \brief The pcl::PCLPointField type of a PLY scalar type's name ("float", "uchar", "int32", ...),
+  * or 0 for none. */
+std::uint8_t
+plyFieldType (const std::string& type);
 
 /** \brief The layout of an ASCII PLY file's vertices, read from its header in \a in, where the
   * header is a plain one: "vertex" its first element, with scalar properties only, colours as
