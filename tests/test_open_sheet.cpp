@@ -443,6 +443,41 @@ TEST (OpenSheet, ClosedObjectsAreNotSheets)
   EXPECT_EQ (trianglesOf (computeWrap (sphere, closed)), trianglesOf (r)) << "closed changes single layers only";
 }
 
+TEST (OpenSheet, ConesOfOneRoundLeaveEachEdgeOnTwoTriangles)
+{
+  // Found by fuzzing: points of a plane, tiny and subnormal coordinates, and a line of points
+  // through it. Two points that the sheet missed were brought on by cones in one round, the second
+  // over an edge that the first's cone had already put on a second triangle (a triangle the
+  // round's index did not hold): the edge ended on three triangles, and a point was left off.
+  const std::vector<Point3> points = {
+      {0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574},
+      {0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574},
+      {0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574, 0x1.c1c1c1c1c1c1cp-574},
+      {0x1.c1c1c1c1c1c1cp-574, 0x0.0p+0, 0x0.0p+0},
+      {0x0.0000040000000p-1022, 0x0.0p+0, 0x0.0p+0},
+      {0x0.0000040080000p-1022, 0x0.0p+0, 0x0.000003ff00000p-1022},
+      {0x0.0p+0, 0x0.0p+0, 0x0.000003ff00000p-1022},
+      {0x0.000003ff00000p-1022, 0x0.0p+0, 0x0.000003ff00000p-1022},
+      {0x0.0000040000000p-1022, 0x0.0p+0, 0x0.000003ff00000p-1022},
+      {0x0.0400000080000p-1022, 0x0.0p+0, 0x0.0000040000000p-1022},
+      {0x0.0p+0, 0x0.0p+0, 0x0.0000040000000p-1022},
+      {0x0.000003ff00000p-1022, 0x0.0p+0, 0x0.0p+0},
+      {0x0.0p+0, 0x0.0p+0, 0x0.000f000000000p-1022},
+      {0x0.0p+0, 0x0.0p+0, 0x0.0000000003f00p-1022},
+      {0x0.0000000400000p-1022, 0x0.0000000400000p-1022, 0x0.0p+0},
+      {0x0.0000000400000p-1022, 0x0.0000000400800p-1022, 0x0.0p+0},
+      {0x0.0000000400800p-1022, 0x0.0p+0, 0x0.0p+0},
+      {0x0.0000000400800p-1022, 0x1.000000000f000p+1, 0x1.8000000000000p+1},
+      {0x1.0000000000000p+1, 0x1.0000000000000p+2, 0x1.8000000000000p+2},
+      {0x1.8000000000000p+1, 0x1.8000000000000p+2, 0x1.2000000000000p+3},
+      {0x1.0000000000000p+2, 0x1.0000000000000p+3, 0x1.8000000002c00p+3},
+      {0x0.0000000003f00p-1022, 0x0.0p+0, 0x0.0400800000000p-1022},
+      {0x0.0400000000000p-1022, 0x1.0000000000000p-975, 0x0.0000040140000p-1022},
+      {0x0.0000040240000p-1022, 0x0.00000402e0000p-1022, 0x0.0000000004008p-1022},
+  };
+  expectOpenSheet (points, 1, 22.0 / 24); // every point but the two duplicates
+}
+
 TEST (OpenSheet, ANonFiniteViewpointIsRefused)
 {
   WrapParameters p;

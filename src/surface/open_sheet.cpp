@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <set>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -983,6 +984,9 @@ SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
   const std::vector<std::uint32_t>&start = by_vertex.first, &around = by_vertex.second;
   // Triangles replaced or given a neighbour in this round: the index no longer tells their edges.
   std::vector<std::uint8_t> touched (triangles_.size (), 0);
+  // Nor does it tell the rims of this round's cones: a cone's triangle on a rim edge may be one the
+  // index does not hold, and the edge already on two triangles.
+  std::set<std::pair<std::uint32_t, std::uint32_t>> rims;
   std::size_t brought = 0;
   Star star;
   std::vector<LinkEdge> link;
@@ -1023,6 +1027,8 @@ SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
     near.clear ();
     for (const auto& [ab, id] : link)
     {
+      if (rims.count (ab))
+        continue;
       on_edge.clear ();
       bool known = true;
       for (std::uint32_t k = start[ab.first]; k < start[ab.first + 1]; ++k)
@@ -1106,6 +1112,7 @@ SheetGrowth::coneOverMissedPoints (const Tetrahedra& tetrahedra)
       const auto [a, b] = best_rim[k];
       const Triangle cone{a, b, v};
       const SimplexId id = linkTriangle (a, b);
+      rims.insert ({std::min (a, b), std::max (a, b)});
       if (k < best.size ())
       {
         triangles_[best[k]] = cone;
