@@ -32,31 +32,29 @@ toFloat (double value)
                                             value));
 }
 
-/** The float nearest to the number token [first, last), as std::strtof reads it: not the double
-  * nearest to it rounded again, which can be a float further off. */
+/** The float nearest to the number token [first, last), whose double is \a number, as std::strtof
+  * reads it: not the double nearest to it rounded again, which can be a float further off. */
 float
-nearestFloat (const char* first, const char* last)
+nearestFloat (const char* first, const char* last, double number)
 {
   const char* digits = first + (*first == '+' && last - first > 1 && first[1] != '-' && first[1] != '+');
   float single;
   const auto [end, ec] = std::from_chars (digits, last, single);
   if (ec == std::errc () && end == last)
     return single;
-  double number; // hexadecimal, or beyond a float's range
-  tokenValue (first, last, number);
-  return toFloat (number);
+  return toFloat (number); // hexadecimal, or beyond a float's range
 }
 
-/** The whole number of type T that the number token [first, last) is, if it is one that T holds. */
+/** The whole number of type T that the number token [first, last), whose double is \a value, is,
+  * if it is one that T holds. */
 template <class T>
 bool
-wholeNumber (const char* first, const char* last, T& out)
+wholeNumber (const char* first, const char* last, double value, T& out)
 {
   const auto [end, ec] = std::from_chars (first, last, out);
   if (ec == std::errc () && end == last)
     return true;
-  double value;
-  if (!tokenValue (first, last, value) || value != std::floor (value))
+  if (value != std::floor (value))
     return false;
   // T's range, as powers of two that a double holds exactly.
   constexpr int bits = std::numeric_limits<T>::digits;
@@ -67,23 +65,23 @@ wholeNumber (const char* first, const char* last, T& out)
   return true;
 }
 
-/** Stores the number token [first, last) at \a point + the value's offset, as its type; false
-  * where it does not fit an integer type. */
+/** Stores the number token [first, last), whose double is \a number, at \a point + the value's
+  * offset, as its type; false where it does not fit an integer type. */
 bool
-storeValue (const char* first, const char* last, const RowValue& value, std::uint8_t* point)
+storeValue (const char* first, const char* last, double number, const RowValue& value, std::uint8_t* point)
 {
   std::uint8_t* at = point + value.offset;
   // An integer read, stored as its own type or as a float.
-  const auto whole = [&] (auto number) {
-    if (!wholeNumber (first, last, number))
+  const auto whole = [&] (auto integer) {
+    if (!wholeNumber (first, last, number, integer))
       return false;
     if (value.stored_as == pcl::PCLPointField::FLOAT32)
     {
-      const auto single = static_cast<float> (number);
+      const auto single = static_cast<float> (integer);
       std::memcpy (at, &single, sizeof single);
     }
     else
-      std::memcpy (at, &number, sizeof number);
+      std::memcpy (at, &integer, sizeof integer);
     return true;
   };
   switch (value.read_as)
@@ -98,25 +96,19 @@ storeValue (const char* first, const char* last, const RowValue& value, std::uin
   case pcl::PCLPointField::UINT64: return whole (std::uint64_t ());
   case pcl::PCLPointField::BOOL:
   {
-    std::uint8_t number;
-    if (!wholeNumber (first, last, number) || number > 1)
+    std::uint8_t flag;
+    if (!wholeNumber (first, last, number, flag) || flag > 1)
       return false;
-    *at = number;
+    *at = flag;
     return true;
   }
   case pcl::PCLPointField::FLOAT32:
   {
-    const float single = nearestFloat (first, last);
+    const float single = nearestFloat (first, last, number);
     std::memcpy (at, &single, sizeof single);
     return true;
   }
-  case pcl::PCLPointField::FLOAT64:
-  {
-    double number;
-    tokenValue (first, last, number);
-    std::memcpy (at, &number, sizeof number);
-    return true;
-  }
+  case pcl::PCLPointField::FLOAT64: std::memcpy (at, &number, sizeof number); return true;
   default: return false;
   }
 }
@@ -148,7 +140,7 @@ readPiece (std::string_view text, Piece& piece, const std::vector<RowValue>& val
         if (count == 0)
           piece.data.resize (at + point_step, 0);
         const RowValue& value = values[count];
-        if (!value.skipped && !storeValue (token, end, value, piece.data.data () + at))
+        if (!value.skipped && !storeValue (token, end, number, value, piece.data.data () + at))
           problem = "'" + std::string (token, end) + "' does not fit field " + value.field;
       }
       ++count;
@@ -193,28 +185,22 @@ readAsciiRows (std::istream& in, std::uintmax_t bytes, const std::vector<RowValu
                            [&] (std::string_view text, Piece& piece) { readPiece (text, piece, values, point_step); });
     for (const Piece& piece : pieces)
     {
-      // The piece's rows, in order, up to the last one wanted.
+      // The piece's rows, in order, up to the last one wanted; a line with numbers after it is
+      // another element's, or one too many.
       std::size_t from = 0; // bytes of piece.data taken
-      for (std::size_t k = 0; k < piece.number_lines.size () && read < rows; ++k)
+      for (std::size_t k = 0; k < piece.number_lines.size (); ++k)
       {
-        if (piece.problem[k] != 0)
-        {
+        if (read == rows && more_follow)
+          break;
+        if (read == rows)
+          error = lineName (piece.number_lines[k]) + "more points than the " + std::to_string (rows) + " declared";
+        else if (piece.problem[k] != 0)
           error = lineName (piece.number_lines[k]) + piece.problems[piece.problem[k] - 1];
+        if (!error.empty ())
           return false;
-        }
         std::memcpy (data.data () + read * point_step, piece.data.data () + from, point_step);
         from += point_step;
         ++read;
-        if (read == rows && !more_follow && k + 1 < piece.number_lines.size ())
-        {
-          error = lineName (piece.number_lines[k + 1]) + "more points than the " + std::to_string (rows) + " declared";
-          return false;
-        }
-      }
-      if (read == rows && !more_follow && from == 0 && !piece.number_lines.empty ())
-      {
-        error = lineName (piece.number_lines[0]) + "more points than the " + std::to_string (rows) + " declared";
-        return false;
       }
       if (piece.error_line != NO_LINE)
       {

@@ -21,21 +21,6 @@ namespace pcl_wrap::apps
 namespace
 {
 
-/** PCL's ASCII PLY reader turns a token that is not a number into NaN, silently: every token of
-  * the data from \a start on must be a number ("nan" and "inf" written out are). */
-template <class Fail>
-void
-checkAsciiData (std::ifstream& in, std::uint64_t start, const Fail& bad)
-{
-  in.clear ();
-  in.seekg (0, std::ios::end);
-  const auto end = static_cast<std::uint64_t> (in.tellg ());
-  in.seekg (std::streamoff (start));
-  const std::size_t line = firstLineNotNumbers (in, end - start);
-  if (line != NO_LINE)
-    bad ("data line " + std::to_string (line + 1) + ": not a number");
-}
-
 /** PCL's PCD reader goes on parsing header lines after DATA, skipping blank lines and comments,
   * until a line that is no keyword: binary data that starts with one (found by fuzzing) would
   * redefine the fields after they were checked. Does the data from \a in on start so? */
@@ -165,7 +150,7 @@ checkPcdFile (const std::string& path)
     bad ("unknown DATA '" + data + "'");
 }
 
-bool
+std::optional<std::uint64_t>
 checkPlyHeader (const std::string& path)
 {
   const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); };
@@ -221,20 +206,21 @@ checkPlyHeader (const std::string& path)
       bad ("the header declares more data than the file holds");
     available -= count * least;
   }
-  return format == "ascii";
+  if (format != "ascii")
+    return std::nullopt;
+  return start;
 }
 
 void
-checkPlyFile (const std::string& path)
+checkPlyAsciiData (const std::string& path, std::uint64_t start)
 {
-  if (!checkPlyHeader (path))
-    return;
   std::ifstream in (path, std::ios::binary);
-  std::string line;
-  while (std::getline (in, line) && line.compare (0, 10, "end_header") != 0)
-  {}
-  checkAsciiData (in, static_cast<std::uint64_t> (in.tellg ()),
-                  [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); });
+  in.seekg (0, std::ios::end);
+  const auto end = static_cast<std::uint64_t> (in.tellg ());
+  in.seekg (std::streamoff (start));
+  const std::size_t line = firstLineNotNumbers (in, end - start);
+  if (line != NO_LINE)
+    throw FileError (path + ": malformed PLY file: data line " + std::to_string (line + 1) + ": not a number");
 }
 
 } // namespace pcl_wrap::apps

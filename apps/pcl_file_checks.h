@@ -4,6 +4,8 @@
 
 // The guards that stand before PCL's PCD and PLY readers: each throws FileError on a file the
 // reader would mishandle.
+#include <cstdint>
+#include <optional>
 #include <string>
 
 namespace pcl_wrap::apps
@@ -17,16 +19,16 @@ void
 checkPcdFile (const std::string& path);
 
 /** \brief PCL's PLY reader allocates what the header declares before reading the data (2e9
-  * vertices cost 23 GB): the declared elements checked to fit in the file. Returns whether the
-  * data is ASCII.
+  * vertices cost 23 GB): the declared elements checked to fit in the file. Returns where the data
+  * starts if it is ASCII, else nothing.
   * \throws FileError where the header is malformed */
-bool
+std::optional<std::uint64_t>
 checkPlyHeader (const std::string& path);
 
-/** \brief checkPlyHeader(), and for ASCII data, every token of it checked to be a number: PCL's
-  * reader turns one that is not into NaN.
-  * \throws FileError where the file is malformed */
+/** \brief PCL's ASCII PLY reader turns a token that is not a number into NaN, silently: every
+  * token of the data from \a start (checkPlyHeader()) on checked to be a number.
+  * \throws FileError where one is not */
 void
-checkPlyFile (const std::string& path);
+checkPlyAsciiData (const std::string& path, std::uint64_t start);
 
 } // namespace pcl_wrap::apps

@@ -286,7 +286,7 @@ readPcd (const std::string& path, pcl::PCLPointCloud2& cloud, Eigen::Vector4f& o
 int
 readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
 {
-  if (checkPlyHeader (path))
+  if (const std::optional<std::uint64_t> ascii_start = checkPlyHeader (path))
   {
     std::ifstream in (path, std::ios::binary);
     if (std::optional<PlyVertexLayout> layout = plainAsciiPlyLayout (in))
@@ -299,7 +299,7 @@ readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
         fail (path, "malformed PLY file: " + error);
       return 0;
     }
-    checkPlyFile (path);
+    checkPlyAsciiData (path, *ascii_start);
   }
   return pcl::io::loadPLYFile (path, cloud);
 }
