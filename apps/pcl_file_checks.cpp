@@ -157,6 +157,7 @@ checkPlyHeader (const std::string& path)
   std::ifstream in (path, std::ios::binary);
   std::string line, format;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elements; // count, least bytes per item
+  bool vertex = false, red = false;                              // in the vertex element; a uchar red seen there
   if (!std::getline (in, line) || line.substr (0, 3) != "ply")
     bad ("no ply magic");
   while (std::getline (in, line) && line.substr (0, 10) != "end_header")
@@ -173,6 +174,8 @@ checkPlyHeader (const std::string& path)
       if (!(words >> name >> count) || count < 0 || count != std::floor (count) || count > 1e15)
         bad ("bad element line");
       elements.emplace_back (static_cast<std::uint64_t> (count), 0);
+      vertex = name == "vertex";
+      red = false;
     }
     else if (keyword == "property")
     {
@@ -183,6 +186,18 @@ checkPlyHeader (const std::string& path)
       const std::uint8_t field_type = plyFieldType (type);
       if (elements.empty () || field_type == 0)
         bad ("bad property line");
+      // PCL's reader packs a vertex's uchar colours where red was; without red before them, it
+      // writes past the point (an assertion fails; found by fuzzing).
+      std::string name;
+      words >> name;
+      if (vertex && field_type == pcl::PCLPointField::UINT8)
+      {
+        const bool component =
+            name == "green" || name == "blue" || name == "alpha" || name == "diffuse_green" || name == "diffuse_blue";
+        red = red || name == "red" || name == "diffuse_red";
+        if (component && !red)
+          bad ("vertex colour '" + name + "' before red");
+      }
       // ASCII: a digit and a space.
       elements.back ().second += format == "ascii" ? 2 : pcl::getFieldSize (field_type);
     }

@@ -252,6 +252,8 @@ malformedFiles ()
       {"no_properties.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 99999999999993\nend_header\n"},
       {"glued_end_header.ply",
        "ply\nformat binary_little_endian 1.0\nend_headerelement vertex 99999999999993\nend_header\n"},
+      {"green_before_red.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                               "property float z\nproperty uchar green\nproperty uchar red\nend_header\n0 0 0 1 2\n"},
       {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
       {"empty.pcd", ""},
       {"junk.pcd", junk},
