@@ -62,8 +62,8 @@ orthosphere (const std::uint32_t* v, const std::vector<Point3>& p, const std::ve
 }
 
 constexpr double VOTE_ONE = 32767; // a cosine of 1 in fixed point
-constexpr std::size_t VOTE_BLOCK = 4096; // tetrahedra voted together, their spheres kept
-constexpr std::uint8_t UNKNOWN = 0, INSIDE = 1, OUTSIDE = 2, TIED = 3;
+constexpr std::size_t VOTE_BLOCK = 4096;        // tetrahedra voted together, their spheres kept
+constexpr std::uint8_t INSIDE = 1, OUTSIDE = 2; // the side a vote is cast for
 
 int
 bucketOf (std::uint16_t in, std::uint16_t out)
@@ -98,9 +98,14 @@ sphereAngleCosine (double rho2, double ha, double hb)
 
 SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedra, const Tetrahedra& adjacency,
                                 const std::vector<Point3>& positions, const std::vector<double>& weights)
-  : adjacency_ (adjacency), tets_ (tetrahedra.size () / 4), labelled_ ((tets_.size () + 63) / 64), queue_ (BUCKETS)
+  : adjacency_ (adjacency),
+    votes_ (tetrahedra.size () / 4),
+    strongest_ (votes_.size ()),
+    labelled_ ((votes_.size () + 63) / 64),
+    inside_ (labelled_.size ()),
+    queue_ (BUCKETS)
 {
-  const std::size_t n = tets_.size ();
+  const std::size_t n = votes_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
 
   // The vote of the sphere of t across its facet i for the other side: the cosine of the angle
@@ -139,7 +144,7 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     return sphereAngleCosine (rho2, ht, hu);
   };
   // A vote is the same from both sides: each interior facet's is computed by its lower-numbered
-  // tetrahedron, which writes it into the other's record too (into a field that only it writes).
+  // tetrahedron, which writes it into the other's votes too (into a slot that only it writes).
   // The tetrahedra are taken in blocks, whose spheres are computed once and kept while the block
   // is voted; a neighbour's outside the block is computed again (the same arithmetic, the same
   // sphere). The tetrahedra are numbered along a space-filling curve, so most neighbours are in
@@ -158,9 +163,8 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
                      };
                      for (std::size_t t = first; t < last; ++t)
                      {
-                       Record& r = tets_[t];
-                       r.in = r.out = 0;
-                       r.label = UNKNOWN;
+                       Votes& r = votes_[t];
+                       strongest_[t] = {0, 0};
                        for (int i = 0; i < 4; ++i)
                        {
                          const std::uint32_t u = adjacency.neighbour (static_cast<std::uint32_t> (t), i);
@@ -168,9 +172,9 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
                            continue;
                          const double cosine = vote (t, i, sphereOf);
                          const double weighed = cosine > 0 ? SAME_SIDE_WEIGHT * cosine : cosine;
-                         r.vote[i] = static_cast<std::int16_t> (std::lrint (weighed * VOTE_ONE));
+                         r[i] = static_cast<std::int16_t> (std::lrint (weighed * VOTE_ONE));
                          if (u != OUTSIDE_HULL)
-                           tets_[u].vote[adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r.vote[i];
+                           votes_[u][adjacency.mirrorIndex (static_cast<std::uint32_t> (t), i)] = r[i];
                        }
                      }
                    },
@@ -182,7 +186,7 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
 void
 SolidLabelling::cast (std::uint32_t t, std::uint8_t side, int vote)
 {
-  Record& r = tets_[t];
+  Strongest& r = strongest_[t];
   const auto strength = static_cast<std::uint16_t> (std::abs (vote));
   std::uint16_t& to = side == INSIDE ? r.in : r.out;
   if (strength <= to)
@@ -198,13 +202,13 @@ SolidLabelling::cast (std::uint32_t t, std::uint8_t side, int vote)
 void
 SolidLabelling::castFrom (std::uint32_t t)
 {
-  const Record& r = tets_[t];
-  const std::uint8_t other = r.label == INSIDE ? OUTSIDE : INSIDE;
+  const Votes& vote = votes_[t];
+  const std::uint8_t label = inside (t) ? INSIDE : OUTSIDE, other = label == INSIDE ? OUTSIDE : INSIDE;
   for (int i = 0; i < 4; ++i)
   {
     const std::uint32_t u = adjacency_.neighbour (t, i);
     if (u != OUTSIDE_HULL && !labelled (u))
-      cast (u, r.vote[i] < 0 ? other : r.label, r.vote[i]);
+      cast (u, vote[i] < 0 ? other : label, vote[i]);
   }
 }
 
@@ -212,16 +216,17 @@ void
 SolidLabelling::prefetchNextPops (const std::vector<std::uint32_t>& bucket) const
 {
   // The flood jumps all over the mesh, and each tetrahedron it pops costs a few cache misses: its
-  // record and neighbours, then its neighbours' records. A bucket is a stack, so the tetrahedra
-  // popped next are mostly known: the record and neighbours of the eighth next are fetched, and
-  // the neighbours' records of the fourth next, whose neighbours were fetched four pops ago (none
-  // of what is labelled already: it is only skipped).
+  // strongest votes, votes and neighbours, then its neighbours' strongest votes. A bucket is a
+  // stack, so the tetrahedra popped next are mostly known: what the eighth next reads of itself is
+  // fetched, and the neighbours' strongest votes of the fourth next, whose neighbours were fetched
+  // four pops ago (none of what is labelled already: it is only skipped).
   if (bucket.size () < 8)
     return;
   const std::uint32_t later = bucket[bucket.size () - 8];
   if (!labelled (later))
   {
-    prefetch (&tets_[later]);
+    prefetch (&strongest_[later]);
+    prefetch (&votes_[later]);
     prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (later)]);
   }
   const std::uint32_t soon = bucket[bucket.size () - 4];
@@ -231,7 +236,7 @@ SolidLabelling::prefetchNextPops (const std::vector<std::uint32_t>& bucket) cons
   {
     const std::uint32_t u = adjacency_.neighbour (soon, i);
     if (u != OUTSIDE_HULL && !labelled (u))
-      prefetch (&tets_[u]);
+      prefetch (&strongest_[u]);
   }
 }
 
@@ -252,17 +257,17 @@ SolidLabelling::run (const Subcomplex* x)
     prefetchNextPops (bucket);
     if (labelled (t))
       continue;
-    Record& r = tets_[t];
+    const Strongest r = strongest_[t];
     if (bucketOf (r.in, r.out) != b)
       continue; // queued again at another priority
-    markLabelled (t);
+    setBit (labelled_, t);
     if (r.in == r.out && !x)
     {
-      r.label = TIED; // for X to break, when it is known
-      tied_.push_back (t);
+      tied_.push_back (t); // for X to break, when it is known
       continue;
     }
-    r.label = r.in > r.out ? INSIDE : r.out > r.in ? OUTSIDE : x->contains ({3, t}) ? INSIDE : OUTSIDE;
+    if (r.in > r.out || (r.in == r.out && x->contains ({3, t})))
+      setBit (inside_, t);
     castFrom (t);
   }
 }
@@ -273,23 +278,29 @@ SolidLabelling::flood ()
   for (std::uint32_t t : on_hull_)
     for (int i = 0; i < 4; ++i)
       if (adjacency_.neighbour (t, i) == OUTSIDE_HULL)
-        cast (t, tets_[t].vote[i] < 0 ? INSIDE : OUTSIDE, tets_[t].vote[i]);
+        cast (t, votes_[t][i] < 0 ? INSIDE : OUTSIDE, votes_[t][i]);
   std::vector<std::uint32_t> ().swap (on_hull_);
   run (nullptr);
   std::vector<std::vector<std::uint32_t>> (BUCKETS).swap (queue_); // every bucket is empty: free them
   // With no tie for X to break, the labels are final: kept in 5 bytes per tetrahedron instead of
-  // the flood's 16 while X is computed.
+  // the flood's 12 while X is computed.
   const auto reached = [&] { // by some vote: every tetrahedron of a connected triangulation is
-    for (const Record& r : tets_)
-      if (r.label == UNKNOWN)
+    const std::size_t n = votes_.size ();
+    for (std::size_t k = 0; k < n / 64; ++k)
+      if (~labelled_[k])
+        return false;
+    for (std::size_t t = n & ~std::size_t (63); t < n; ++t)
+      if (!labelled (static_cast<std::uint32_t> (t)))
         return false;
     return true;
   };
   if (tied_.empty () && reached ())
   {
+    FilledInParallel<Votes> ().swap (votes_);
     finished_ = labelsOf (nullptr);
-    FilledInParallel<Record> ().swap (tets_);
+    FilledInParallel<Strongest> ().swap (strongest_);
     std::vector<std::uint64_t> ().swap (labelled_);
+    std::vector<std::uint64_t> ().swap (inside_);
   }
 }
 
@@ -297,11 +308,12 @@ SolidLabels
 SolidLabelling::labelsOf (const Subcomplex* x) const
 {
   // A tetrahedron no vote reached (none on a connected triangulation) follows X.
-  const std::size_t n = tets_.size ();
+  const std::size_t n = strongest_.size ();
   SolidLabels labels{std::vector<std::uint8_t> (n), std::vector<float> (n)};
   parallelForEach (n, [&] (std::size_t t) {
-    const Record& r = tets_[t];
-    labels.inside[t] = r.label == INSIDE || (r.label == UNKNOWN && x && x->contains ({3, static_cast<SimplexId> (t)}));
+    const Strongest& r = strongest_[t];
+    const auto id = static_cast<std::uint32_t> (t);
+    labels.inside[t] = labelled (id) ? inside (id) : x && x->contains ({3, static_cast<SimplexId> (t)});
     labels.margin[t] = static_cast<float> (std::abs (int (r.in) - int (r.out)) / VOTE_ONE);
   });
   return labels;
@@ -319,7 +331,8 @@ SolidLabelling::labels (const Subcomplex& x)
     // flood finished from them.
     for (std::uint32_t t : tied_)
     {
-      tets_[t].label = x.contains ({3, t}) ? INSIDE : OUTSIDE;
+      if (x.contains ({3, t}))
+        setBit (inside_, t);
       castFrom (t);
     }
     tied_.clear ();

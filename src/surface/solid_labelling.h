@@ -78,36 +78,43 @@ public:
   SolidLabels labels (const Subcomplex& x);
 
 private:
-  /** Per tetrahedron, what the flood reads and writes besides its neighbours, in a quarter of a
-    * cache line: the flood visits tetrahedra in priority order, all over the mesh. Votes and
-    * evidence are fixed point, finer than the flood's buckets. */
-  struct alignas (16) Record
+  /** Per tetrahedron, the strongest vote received so far for each side. The flood visits
+    * tetrahedra in priority order, all over the mesh, and reads and writes these on every vote it
+    * casts: 16 tetrahedra to a cache line. Votes and evidence are fixed point, finer than the
+    * flood's buckets. */
+  struct Strongest
   {
-    std::int16_t vote[4];    ///< the vote cast across each facet
-    std::uint16_t in, out;   ///< the strongest vote received so far for each side
-    std::uint8_t label;
+    std::uint16_t in, out;
   };
-  static_assert (sizeof (Record) == 16);
+  /// Per tetrahedron, the vote cast across each facet: read once, when the tetrahedron is labelled.
+  using Votes = std::array<std::int16_t, 4>;
   static constexpr int BUCKETS = 4096; ///< of the margin between the votes for the two sides
 
   void cast (std::uint32_t t, std::uint8_t side, int vote);
   void castFrom (std::uint32_t t);
   void prefetchNextPops (const std::vector<std::uint32_t>& bucket) const; ///< what they will read
   void run (const Subcomplex* x); ///< without X, ties are set aside
-  SolidLabels labelsOf (const Subcomplex* x) const; ///< from the records; X decides the unreached
-  bool labelled (std::uint32_t t) const { return (labelled_[t >> 6] >> (t & 63)) & 1; }
-  void markLabelled (std::uint32_t t) { labelled_[t >> 6] |= std::uint64_t (1) << (t & 63); }
+  SolidLabels labelsOf (const Subcomplex* x) const; ///< from the flood's bits; X decides the unreached
+  static bool bit (const std::vector<std::uint64_t>& bits, std::uint32_t t) { return (bits[t >> 6] >> (t & 63)) & 1; }
+  static void setBit (std::vector<std::uint64_t>& bits, std::uint32_t t)
+  {
+    bits[t >> 6] |= std::uint64_t (1) << (t & 63);
+  }
+  bool labelled (std::uint32_t t) const { return bit (labelled_, t); }
+  bool inside (std::uint32_t t) const { return bit (inside_, t); }
 
   const Tetrahedra& adjacency_;
-  FilledInParallel<Record> tets_;
+  FilledInParallel<Votes> votes_;
+  FilledInParallel<Strongest> strongest_;
   /// A bit per tetrahedron, set once it is labelled (or tied): most of what the flood pops or
-  /// looks at is already labelled, and these bits stay in cache where the records do not.
+  /// looks at is already labelled, and these bits stay in cache where the votes do not.
   std::vector<std::uint64_t> labelled_;
+  std::vector<std::uint64_t> inside_;             ///< a bit per tetrahedron, set once it is labelled inside
   std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
   int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
   std::vector<std::uint32_t> on_hull_;            ///< the tetrahedra with a facet on the hull, ascending
   std::vector<std::uint32_t> tied_;
-  std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, the records freed
+  std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, its arrays freed
 };
 
 /** \brief The weight of a vote for the same side against one for the other side: a vote for the same
