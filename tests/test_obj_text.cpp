@@ -5,6 +5,7 @@
 // vertices, colours and normals bit for bit, or the same first error, on edge cases, random bytes
 // and texts cut into tasks at every line, and read from a stream a window at a time.
 #include "support/obj_reference.h"
+#include "support/random_text.h"
 
 #include <gtest/gtest.h>
 
@@ -111,18 +112,13 @@ TEST (ObjText, EdgeCasesReadAsLineByLine)
 TEST (ObjText, RandomBytesReadAsLineByLine)
 {
   std::mt19937_64 random (7);
-  const std::string tokens[] = {"v",  "vn",  "v ",  "vn ", "f ", "1", "-2.5", "3e4", "0x1p3",
-                                "+7", "inf", "nan", "#",   " ",  " ", "\t",   "\n",  "\n",
-                                "\r", "e",   ".",   "x",   "1e", "9", "\v",   "\0",  "1e999"};
+  const std::vector<std::string> tokens = {
+      "v",    "vn", "v ", "vn ", "f ", "1",  "-2.5", "3e4", "0x1p3", "+7", "inf", "nan", "#",
+      " ",    " ",  "\t", "\n",  "\n", "\r", "e",    ".",   "x",     "1e", "9",   "\v",  std::string (1, '\0'),
+      "1e999"};
   for (int round = 0; round < 3000; ++round)
   {
-    std::string text;
-    const int length = std::uniform_int_distribution<int> (0, 60) (random);
-    for (int i = 0; i < length; ++i)
-    {
-      const std::size_t k = random () % (sizeof tokens / sizeof tokens[0]);
-      text += k + 2 == sizeof tokens / sizeof tokens[0] ? std::string (1, '\0') : tokens[k];
-    }
+    const std::string text = test::randomTokenText (random, tokens);
     expectSameAsReference (text, 1 + random () % 16);
   }
 }

@@ -5,6 +5,7 @@
 // replaces: the same vertices bit for bit, or the same first error, on edge cases, random bytes
 // and meshes with a bad line at each place, read in windows and tasks of a few bytes and more.
 #include "support/off_reference.h"
+#include "support/random_text.h"
 
 #include <gtest/gtest.h>
 
@@ -110,18 +111,15 @@ TEST (OffText, EdgeCasesReadAsLineByLine)
 TEST (OffText, RandomBytesReadAsLineByLine)
 {
   std::mt19937_64 random (7);
-  const std::string tokens[] = {"1",  "-2.5", "3e4", "0x1p3", "+7", "inf", "nan", "#", " ",  " ",  "\t",   "\n",
-                                "\n", "\n",   "\r",  "e",     ".",  "x",   "1e",  "9", "\v", "\0", "1e999"};
+  const std::vector<std::string> tokens = {
+      "1",    "-2.5", "3e4", "0x1p3", "+7", "inf", "nan", "#",  " ", " ",  "\t",
+      "\n",   "\n",   "\n",  "\r",    "e",  ".",   "x",   "1e", "9", "\v", std::string (1, '\0'),
+      "1e999"};
   const std::string headers[] = {"OFF\n", "OFF 3 ", "COFF\n", "NOFF\n2 0 0\n", "OFF\n4 1 0\n", "CNOFF\n1\n"};
   for (int round = 0; round < 1500; ++round)
   {
     std::string text = headers[random () % 6];
-    const int length = std::uniform_int_distribution<int> (0, 60) (random);
-    for (int i = 0; i < length; ++i)
-    {
-      const std::size_t k = random () % (sizeof tokens / sizeof tokens[0]);
-      text += k + 2 == sizeof tokens / sizeof tokens[0] ? std::string (1, '\0') : tokens[k];
-    }
+    text += test::randomTokenText (random, tokens);
     const std::size_t window = 1 + random () % 16, chunk = 1 + random () % 16;
     expectSameAsReference (text, window, chunk);
   }

@@ -9,6 +9,7 @@
 #include "ascii_rows.h"
 #include "ply_ascii.h"
 #include "point_file.h"
+#include "support/point_file_error.h"
 
 #include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
@@ -219,18 +220,9 @@ TEST (PlyAscii, WrongDataNamesItsLine)
       readOurs (window, 2, error);
       EXPECT_EQ (error, message);
     }
+    EXPECT_EQ (pointFileError (PATH), message.empty () ? "" : PATH + ": malformed PLY file: " + message);
     if (message.empty ())
       EXPECT_EQ (apps::readPointFile (PATH).points.size (), 3u);
-    else
-      try
-      {
-        apps::readPointFile (PATH);
-        ADD_FAILURE () << "no error";
-      }
-      catch (const apps::FileError& e)
-      {
-        EXPECT_EQ (std::string (e.what ()), PATH + ": malformed PLY file: " + message);
-      }
   }
   std::remove (PATH.c_str ());
 }
