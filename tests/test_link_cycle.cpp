@@ -126,6 +126,34 @@ shapeOf (const std::vector<Edge>& edges)
   return detail::linkShape (edges.size (), [&] (std::size_t e) { return std::make_pair (edges[e][0], edges[e][1]); });
 }
 
+TEST (LinkCycle, TheShortWalkAgreesWithTheSortedEnds)
+{
+  // isOneCycle() walks a short link before it sorts its ends: on any edges, repeated, turned and
+  // looped ones too, both must say the same.
+  std::mt19937 random (5);
+  const auto below = [&] (std::uint32_t k) { return static_cast<std::uint32_t> (random () % k); };
+  std::size_t cycles = 0;
+  for (int trial = 0; trial < 50000; ++trial)
+  {
+    const std::uint32_t n = 3 + below (16);
+    std::vector<Edge> edges = cycle (n, 0, 1, random);
+    for (std::uint32_t change = below (3); change-- > 0;)
+      switch (below (5))
+      {
+      case 0: edges.pop_back (); break;
+      case 1: edges.push_back (edges[below (static_cast<std::uint32_t> (edges.size ()))]); break;
+      case 2: edges.push_back ({below (n + 2), below (n + 2)}); break;
+      case 3: edges[below (static_cast<std::uint32_t> (edges.size ()))][below (2)] = below (n + 2); break;
+      default: std::swap (edges.front (), edges[below (static_cast<std::uint32_t> (edges.size ()))]);
+      }
+    const detail::LinkShape shape = shapeOf (edges);
+    const bool expected = edges.size () >= 3 && shape.cycles && shape.parts == 1;
+    ASSERT_EQ (byTheEngine (edges), expected) << "trial " << trial;
+    cycles += expected;
+  }
+  EXPECT_GT (cycles, 15000u);
+}
+
 /** The connected parts of the graph of \a edges, by a depth-first search. */
 std::uint32_t
 partsBySearch (const std::vector<Edge>& edges)

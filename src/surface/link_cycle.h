@@ -81,6 +81,35 @@ isOneCycle (It first, It last)
   const auto k = static_cast<std::size_t> (last - first);
   if (k < 3)
     return false;
+  // Most links are one short cycle: a walk round it from the first edge, on to the one other edge
+  // at each end it reaches, says so without sorting. Where the walk meets anything else, the
+  // sorted ends decide.
+  constexpr std::size_t SHORT = 16;
+  if (k <= SHORT)
+  {
+    std::size_t edge = 0;
+    std::uint32_t end = first[0][1];
+    for (std::size_t steps = 1; steps <= k && first[edge][0] != first[edge][1]; ++steps)
+    {
+      std::size_t next = k, found = 0;
+      for (std::size_t f = 0; f < k; ++f)
+        if (f != edge && (first[f][0] == end || first[f][1] == end))
+        {
+          next = f;
+          ++found;
+        }
+      if (found != 1)
+        break;
+      if (next == 0)
+      {
+        if (steps == k)
+          return true;
+        break;
+      }
+      edge = next;
+      end = first[edge][0] == end ? first[edge][1] : first[edge][0];
+    }
+  }
   const LinkShape shape = linkShape (k, [&] (std::size_t e) { return std::make_pair (first[e][0], first[e][1]); });
   return shape.cycles && shape.parts == 1;
 }
