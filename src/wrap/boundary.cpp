@@ -214,21 +214,22 @@ extractBoundary (const SimplicialComplex& complex, const Subcomplex& x, bool ori
 Boundary
 extractSolidBoundary (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
 {
+  // The facets to write, found once (a mask per tetrahedron): writeFacets() asks twice.
+  FilledInParallel<std::uint8_t> facets (inside.size ());
+  parallelForEach (inside.size (), [&] (std::size_t t) {
+    unsigned mask = 0;
+    if (inside[t])
+      for (int i = 0; i < 4; ++i)
+      {
+        const std::uint32_t u = tetrahedra.neighbour (static_cast<std::uint32_t> (t), i);
+        if (u == OUTSIDE_HULL || !inside[u])
+          mask |= 1u << i;
+      }
+    facets[t] = static_cast<std::uint8_t> (mask);
+  });
   Boundary w;
   writeFacets (
-      tetrahedra.complex (),
-      [&] (std::size_t t) {
-        unsigned mask = 0;
-        if (inside[t])
-          for (int i = 0; i < 4; ++i)
-          {
-            const std::uint32_t u = tetrahedra.neighbour (static_cast<std::uint32_t> (t), i);
-            if (u == OUTSIDE_HULL || !inside[u])
-              mask |= 1u << i;
-          }
-        return mask;
-      },
-      w);
+      tetrahedra.complex (), [&] (std::size_t t) { return unsigned (facets[t]); }, w);
   return w;
 }
 
