@@ -40,32 +40,56 @@ struct TrianglesAround
   {}
 };
 
+/** Of the \a count triangles \a triangle (k), the opposite vertex of the last with the edge from
+  * \a b to \a a; \a a where none has it. */
+template <class TriangleAt>
+std::uint32_t
+oppositeOfEdge (std::size_t count, const TriangleAt& triangle, std::uint32_t a, std::uint32_t b)
+{
+  std::uint32_t found = a;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Triangle& u = triangle (k);
+    for (int j = 0; j < 3; ++j)
+      if (u[j] == b && u[(j + 1) % 3] == a)
+        found = u[(j + 2) % 3];
+  }
+  return found;
+}
+
 /** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to the
   * next), found among the triangles around the edge's first vertex; t's vertex i where the edge is
   * on no other. */
 std::uint32_t
 oppositeVertex (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t t, int i)
 {
-  const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
-  std::uint32_t found = a;
-  for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
-  {
-    const Triangle& u = triangles[around.triangle[k]];
-    for (int j = 0; j < 3; ++j)
-      if (u[j] == b && u[(j + 1) % 3] == a) // the same edge, the other way round
-        found = u[(j + 2) % 3];
-  }
-  return found;
+  const std::uint32_t a = triangles[t][i];
+  const std::size_t first = around.begin[a];
+  return oppositeOfEdge (
+      around.begin[a + 1] - first,
+      [&] (std::size_t k) -> const Triangle& { return triangles[around.triangle[first + k]]; }, a,
+      triangles[t][(i + 1) % 3]);
 }
 
-/** oppositeVertex() of every triangle and edge, found on all threads. */
+/** oppositeVertex() of every triangle and edge, found on all threads: at each vertex a, for the
+  * edges that start at a, among the triangles around a, read once. */
 std::vector<std::array<std::uint32_t, 3>>
 oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround& around)
 {
   std::vector<std::array<std::uint32_t, 3>> opposite (triangles.size ());
-  parallelForEach (triangles.size (), [&] (std::size_t t) {
-    for (int i = 0; i < 3; ++i)
-      opposite[t][i] = oppositeVertex (triangles, around, static_cast<std::uint32_t> (t), i);
+  const std::size_t num_vertices = around.begin.size () - 1;
+  tbb::enumerable_thread_specific<std::vector<Triangle>> scratch;
+  parallelForEach (num_vertices, [&] (std::size_t vertex) {
+    const auto a = static_cast<std::uint32_t> (vertex);
+    std::vector<Triangle>& near = scratch.local ();
+    near.clear ();
+    for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
+      near.push_back (triangles[around.triangle[k]]);
+    for (std::size_t k = 0; k < near.size (); ++k)
+      for (int i = 0; i < 3; ++i)
+        if (near[k][i] == a)
+          opposite[around.triangle[around.begin[a] + k]][i] = oppositeOfEdge (
+              near.size (), [&] (std::size_t m) -> const Triangle& { return near[m]; }, a, near[k][(i + 1) % 3]);
   });
   return opposite;
 }
