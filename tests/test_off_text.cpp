@@ -111,10 +111,10 @@ TEST (OffText, EdgeCasesReadAsLineByLine)
 TEST (OffText, RandomBytesReadAsLineByLine)
 {
   std::mt19937_64 random (7);
-  const std::vector<std::string> tokens = {
-      "1",    "-2.5", "3e4", "0x1p3", "+7", "inf", "nan", "#",  " ", " ",  "\t",
-      "\n",   "\n",   "\n",  "\r",    "e",  ".",   "x",   "1e", "9", "\v", std::string (1, '\0'),
-      "1e999"};
+  using namespace std::string_literals; // "\0"s: a token of one NUL byte
+  const std::vector<std::string> tokens = {"1", "-2.5", "3e4", "0x1p3", "+7", "inf", "nan",  "#",
+                                           " ", " ",    "\t",  "\n",    "\n", "\n",  "\r",   "e",
+                                           ".", "x",    "1e",  "9",     "\v", "\0"s, "1e999"};
   const std::string headers[] = {"OFF\n", "OFF 3 ", "COFF\n", "NOFF\n2 0 0\n", "OFF\n4 1 0\n", "CNOFF\n1\n"};
   for (int round = 0; round < 1500; ++round)
   {

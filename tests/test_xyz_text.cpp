@@ -104,30 +104,10 @@ TEST (XyzText, EdgeCasesReadAsLineByLine)
 TEST (XyzText, RandomBytesReadAsLineByLine)
 {
   std::mt19937_64 random (7);
-  const std::vector<std::string> tokens = {"1",
-                                           "-2.5",
-                                           "3e4",
-                                           "0x1p3",
-                                           "+7",
-                                           "inf",
-                                           "nan",
-                                           "#",
-                                           " ",
-                                           " ",
-                                           "\t",
-                                           "\n",
-                                           "\n",
-                                           "\r",
-                                           "e",
-                                           ".",
-                                           "-",
-                                           "x",
-                                           "1e",
-                                           "0.",
-                                           "9",
-                                           "\v",
-                                           std::string (1, '\0'),
-                                           "1e999"};
+  using namespace std::string_literals; // "\0"s: a token of one NUL byte
+  const std::vector<std::string> tokens = {"1", "-2.5", "3e4", "0x1p3", "+7", "inf", "nan", "#",
+                                           " ", " ",    "\t",  "\n",    "\n", "\r",  "e",   ".",
+                                           "-", "x",    "1e",  "0.",    "9",  "\v",  "\0"s, "1e999"};
   for (int round = 0; round < 3000; ++round)
   {
     const std::string text = test::randomTokenText (random, tokens);
