@@ -102,8 +102,7 @@ SolidLabelling::SolidLabelling (const FilledInParallel<std::uint32_t>& tetrahedr
     votes_ (tetrahedra.size () / 4),
     strongest_ (votes_.size ()),
     labelled_ ((votes_.size () + 63) / 64),
-    inside_ (labelled_.size ()),
-    queue_ (BUCKETS)
+    inside_ (labelled_.size ())
 {
   const std::size_t n = votes_.size ();
   const auto vertices = [&] (std::size_t t) { return &tetrahedra[4 * t]; };
@@ -192,11 +191,9 @@ SolidLabelling::cast (std::uint32_t t, std::uint8_t side, int vote)
   if (strength <= to)
     return;
   to = strength;
-  const int b = bucketOf (r.in, r.out);
-  queue_[b].push_back (t);
+  queue_.push (bucketOf (r.in, r.out), t);
   // Pushed on the top bucket, it is often the next popped: its neighbours are on their way.
   prefetch (&adjacency_.neighbourArray ()[4 * std::size_t (t)]);
-  top_ = std::max (top_, b);
 }
 
 void
@@ -243,18 +240,10 @@ SolidLabelling::prefetchNextPops (const std::vector<std::uint32_t>& bucket) cons
 void
 SolidLabelling::run (const Subcomplex* x)
 {
-  while (top_ >= 0)
+  for (int b = queue_.top (); b >= 0; b = queue_.top ())
   {
-    std::vector<std::uint32_t>& bucket = queue_[top_];
-    if (bucket.empty ())
-    {
-      --top_;
-      continue;
-    }
-    const int b = top_;
-    const std::uint32_t t = bucket.back ();
-    bucket.pop_back ();
-    prefetchNextPops (bucket);
+    const std::uint32_t t = queue_.pop (b);
+    prefetchNextPops (queue_.stack (b));
     if (labelled (t))
       continue;
     const Strongest r = strongest_[t];
@@ -281,7 +270,7 @@ SolidLabelling::flood ()
         cast (t, votes_[t][i] < 0 ? INSIDE : OUTSIDE, votes_[t][i]);
   std::vector<std::uint32_t> ().swap (on_hull_);
   run (nullptr);
-  std::vector<std::vector<std::uint32_t>> (BUCKETS).swap (queue_); // every bucket is empty: free them
+  queue_.release ();
   // With no tie for X to break, the labels are final: kept in 5 bytes per tetrahedron instead of
   // the flood's 12 while X is computed.
   const auto reached = [&] { // by some vote: every tetrahedron of a connected triangulation is

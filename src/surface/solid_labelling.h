@@ -3,6 +3,7 @@
 #pragma once
 
 #include "delaunay/simplicial_complex.h"
+#include "surface/bucket_queue.h"
 #include "delaunay/tetrahedra.h"
 #include "util/filled_in_parallel.h"
 #include "wrap/subcomplex.h"
@@ -109,10 +110,9 @@ private:
   /// A bit per tetrahedron, set once it is labelled (or tied): most of what the flood pops or
   /// looks at is already labelled, and these bits stay in cache where the votes do not.
   std::vector<std::uint64_t> labelled_;
-  std::vector<std::uint64_t> inside_;             ///< a bit per tetrahedron, set once it is labelled inside
-  std::vector<std::vector<std::uint32_t>> queue_; ///< per bucket, popped from the back
-  int top_ = -1;                                  ///< the highest bucket that may hold a tetrahedron
-  std::vector<std::uint32_t> on_hull_;            ///< the tetrahedra with a facet on the hull, ascending
+  std::vector<std::uint64_t> inside_;  ///< a bit per tetrahedron, set once it is labelled inside
+  BucketQueue<BUCKETS> queue_;         ///< tetrahedra by the margin between their strongest votes
+  std::vector<std::uint32_t> on_hull_; ///< the tetrahedra with a facet on the hull, ascending
   std::vector<std::uint32_t> tied_;
   std::optional<SolidLabels> finished_; ///< the flood met no tie: the labels, its arrays freed
 };

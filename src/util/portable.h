@@ -3,11 +3,13 @@
 #pragma once
 
 // What the engine needs beyond standard C++17, in one place: atomic access to plain array
-// elements (the arrays are filled in parallel, then read plainly), the lowest set bit of a mask,
-// and advice on memory pages and caches. GCC and Clang have builtins for the first two; with another
-// compiler, C++20's std::atomic_ref and std::countr_zero take their place.
+// elements (the arrays are filled in parallel, then read plainly), the lowest and highest set bits
+// of a mask, and advice on memory pages and caches. GCC and Clang have builtins for the first two;
+// with another compiler, C++20's std::atomic_ref, std::countr_zero and std::countl_zero take their
+// place.
 
 #include <cstddef>
+#include <cstdint>
 
 #if !defined(__GNUC__)
 #include <atomic>
@@ -67,6 +69,13 @@ lowestSetBit (unsigned mask)
   return __builtin_ctz (mask);
 }
 
+/** The index of the highest set bit of \a mask, which is not 0. */
+inline int
+highestSetBit (std::uint64_t mask)
+{
+  return 63 - __builtin_clzll (mask);
+}
+
 #else
 
 template <class T>
@@ -108,6 +117,12 @@ inline int
 lowestSetBit (unsigned mask)
 {
   return std::countr_zero (mask);
+}
+
+inline int
+highestSetBit (std::uint64_t mask)
+{
+  return 63 - std::countl_zero (mask);
 }
 
 #endif
