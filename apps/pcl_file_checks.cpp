@@ -181,11 +181,17 @@ checkPlyHeader (const std::string& path)
     {
       std::string type;
       words >> type;
-      if (type == "list")
+      const bool list = type == "list";
+      if (list)
         words >> type; // the item count's type: the least a list takes
       const std::uint8_t field_type = plyFieldType (type);
       if (elements.empty () || field_type == 0)
         bad ("bad property line");
+      // PCL's reader sizes a vertex's list by the first vertex's and places the fields after it as
+      // if it held one item: a longer list later writes past the point (an assertion fails; found
+      // by fuzzing), and any list longer than one misplaces what follows it.
+      if (vertex && list)
+        bad ("a list property in the vertex element");
       // PCL's reader packs a vertex's uchar colours where red was; without red before them, it
       // writes past the point (an assertion fails; found by fuzzing).
       std::string name;

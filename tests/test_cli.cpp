@@ -254,6 +254,10 @@ malformedFiles ()
        "ply\nformat binary_little_endian 1.0\nend_headerelement vertex 99999999999993\nend_header\n"},
       {"green_before_red.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
                                "property float z\nproperty uchar green\nproperty uchar red\nend_header\n0 0 0 1 2\n"},
+      {"vertex_list.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty list uchar uchar l\n"
+                          "property float x\nproperty float y\nproperty float z\nend_header\n" +
+                              std::string ("\x01\x00", 2) + std::string (12, '\0') +
+                              std::string ("\x03\x00\x00\x00", 4) + std::string (12, '\0')},
       {"nofields.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n"},
       {"empty.pcd", ""},
       {"junk.pcd", junk},
