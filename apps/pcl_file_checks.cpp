@@ -8,8 +8,10 @@
 
 #include <pcl/common/io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -150,7 +152,7 @@ checkPcdFile (const std::string& path)
     bad ("unknown DATA '" + data + "'");
 }
 
-std::optional<std::uint64_t>
+PlyHeaderCheck
 checkPlyHeader (const std::string& path)
 {
   const auto bad = [&] (const std::string& what) { throw FileError (path + ": malformed PLY file: " + what); };
@@ -158,10 +160,21 @@ checkPlyHeader (const std::string& path)
   std::string line, format;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elements; // count, least bytes per item
   bool vertex = false, red = false;                              // in the vertex element; a uchar red seen there
-  if (!std::getline (in, line) || line.substr (0, 3) != "ply")
+  // The cloud's size as PCL's reader sets it: obj_info's num_cols and num_rows, else the vertices.
+  std::uint32_t width = 0, height = 0;
+  std::uint64_t vertices = 0, range_grid = 0;
+  int vertex_elements = 0;
+  bool has_range_grid = false;
+  // PCL's reader takes the fourth byte for the magic's end: a '\r' there makes it end header lines at
+  // '\r' and skip the byte after each. Lines that end in "\r\n" alone read the same either way.
+  if (!std::getline (in, line) || line.compare (0, 3, "ply") != 0 ||
+      line.find_first_not_of (" \t\r", 3) != std::string::npos)
     bad ("no ply magic");
+  const bool cr = line.size () > 3 && line[3] == '\r';
   while (std::getline (in, line) && line.substr (0, 10) != "end_header")
   {
+    if (cr && (line.empty () || line.find ('\r') != line.size () - 1))
+      bad ("a header line not ended by \"\\r\\n\" where the first one is");
     std::istringstream words (line);
     std::string keyword;
     words >> keyword;
@@ -176,6 +189,42 @@ checkPlyHeader (const std::string& path)
       elements.emplace_back (static_cast<std::uint64_t> (count), 0);
       vertex = name == "vertex";
       red = false;
+      if (vertex)
+      {
+        if (++vertex_elements > 1 || count > 0xffffffffu)
+          bad ("a second vertex element, or more than 2^32 - 1 vertices");
+        vertices = static_cast<std::uint64_t> (count);
+        if (width == 0 || height == 0)
+        {
+          width = static_cast<std::uint32_t> (vertices);
+          height = 1;
+        }
+      }
+      if (name == "range_grid")
+      {
+        has_range_grid = true;
+        range_grid = static_cast<std::uint64_t> (count);
+      }
+    }
+    else if (keyword == "obj_info")
+    {
+      // PCL's reader splits the line at blanks and tabs, fails an assertion unless its first word
+      // starts with "obj_info" (found by fuzzing), and reads num_cols and num_rows with atoi.
+      if (line.compare (0, 8, "obj_info") != 0)
+        bad ("an obj_info line that does not start with obj_info");
+      std::vector<std::string> parts;
+      const std::string text = cr ? line.substr (0, line.size () - 1) : line;
+      for (std::size_t at = 0; (at = text.find_first_not_of (" \t", at)) != std::string::npos;)
+      {
+        const std::size_t end = std::min (text.find_first_of (" \t", at), text.size ());
+        parts.push_back (text.substr (at, end - at));
+        at = end;
+      }
+      if (parts.size () >= 3 && (parts[1] == "num_cols" || parts[1] == "num_rows"))
+      {
+        const auto value = static_cast<std::uint32_t> (static_cast<int> (std::strtol (parts[2].c_str (), nullptr, 10)));
+        (parts[1] == "num_cols" ? width : height) = value;
+      }
     }
     else if (keyword == "property")
     {
@@ -212,7 +261,7 @@ checkPlyHeader (const std::string& path)
     bad ("no end_header");
   // PCL reads "end_header" only as a word of its own, and takes a line that merely starts with it
   // as more header (found by fuzzing: an element declared there was never checked here).
-  if (line.find_first_not_of (" \t\r", 10) != std::string::npos)
+  if (line.find_first_not_of (" \t\r", 10) != std::string::npos || (cr && line.back () != '\r'))
     bad ("text after end_header on its line");
   if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
     bad ("unknown format '" + format + "'");
@@ -227,9 +276,18 @@ checkPlyHeader (const std::string& path)
       bad ("the header declares more data than the file holds");
     available -= count * least;
   }
-  if (format != "ascii")
-    return std::nullopt;
-  return start;
+  PlyHeaderCheck check;
+  check.ascii_start = format == "ascii" ? std::optional<std::uint64_t> (start) : std::nullopt;
+  // PCL's reader sizes the cloud as num_cols x num_rows and writes the vertices into it: fewer
+  // places fail an assertion (found by fuzzing), more leave points of zeros after the vertices
+  // (PCL's own ASCII writer declares fewer vertices than places for a cloud with NaN points). A
+  // range grid then moves the vertices to its cells, one place each.
+  const std::uint64_t places = std::uint64_t (width) * height;
+  check.points = has_range_grid ? range_grid : vertices;
+  if (vertex_elements == 1 && (places != check.points || vertices > places))
+    check.size_problem = "obj_info's num_cols x num_rows is " + std::to_string (places) + " points, the " +
+                         (has_range_grid ? "range grid " : "vertex element ") + std::to_string (check.points);
+  return check;
 }
 
 void

@@ -18,11 +18,21 @@ namespace pcl_wrap::apps
 void
 checkPcdFile (const std::string& path);
 
+/** \brief What checkPlyHeader() found in a PLY file's header. */
+struct PlyHeaderCheck
+{
+  std::optional<std::uint64_t> ascii_start; ///< where the data starts if it is ASCII
+  std::uint64_t points = 0; ///< the points PCL's reader is to give: the range grid's cells, else the vertices
+  /** Why PCL's reader would give a cloud of another size, if it would: obj_info's num_cols x
+    * num_rows, which it takes for the cloud's size, is not \a points. Empty if not. */
+  std::string size_problem;
+};
+
 /** \brief PCL's PLY reader allocates what the header declares before reading the data (2e9
-  * vertices cost 23 GB): the declared elements checked to fit in the file. Returns where the data
-  * starts if it is ASCII, else nothing.
+  * vertices cost 23 GB): the declared elements checked to fit in the file, and the header checked
+  * for what makes the reader fail an assertion.
   * \throws FileError where the header is malformed */
-std::optional<std::uint64_t>
+PlyHeaderCheck
 checkPlyHeader (const std::string& path);
 
 /** \brief PCL's ASCII PLY reader turns a token that is not a number into NaN, silently: every

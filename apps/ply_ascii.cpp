@@ -126,8 +126,8 @@ plainAsciiPlyLayout (std::istream& in)
       out.values.push_back ({name, field_type, stored, cloud.point_step});
       appendField (cloud, name, stored);
     }
-    else if (keyword != "comment")
-      return std::nullopt; // obj_info, or what PCL's reader is to judge
+    else if (keyword != "comment" && keyword != "obj_info")
+      return std::nullopt; // what PCL's reader is to judge
   }
   if (!ended || !ascii || elements == 0 || colour == 1 || colour == 2 || !in)
     return std::nullopt;

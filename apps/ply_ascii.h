@@ -32,8 +32,10 @@ plyFieldType (const std::string& type);
 /** \brief The layout of an ASCII PLY file's vertices, read from its header in \a in, where the
   * header is a plain one: "vertex" its first element, with scalar properties only, colours as
   * consecutive uchar red, green, blue and optionally alpha, no "camera" or "range_grid" element,
-  * no obj_info line (which PCL's reader takes for the cloud's dimensions), no '\\r'. Otherwise
-  * nothing: such a file is left to PCL's reader.
+  * no '\\r'. Otherwise nothing: such a file is left to PCL's reader. Unlike PCL's reader, it gives
+  * the vertices whatever obj_info's num_cols and num_rows say: PCL's ASCII writer leaves a cloud's
+  * NaN points out of the vertices but not out of num_cols, where PCL's reader would make points of
+  * zeros of them.
   *
   * The fields are PCL's: each property its own, of its type, but uchar red, green and blue one
   * FLOAT32 field "rgb" (its bytes blue, green, red, 0), with alpha one UINT32 field "rgba" (alpha

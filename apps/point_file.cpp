@@ -286,7 +286,8 @@ readPcd (const std::string& path, pcl::PCLPointCloud2& cloud, Eigen::Vector4f& o
 int
 readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
 {
-  if (const std::optional<std::uint64_t> ascii_start = checkPlyHeader (path))
+  const PlyHeaderCheck header = checkPlyHeader (path);
+  if (const std::optional<std::uint64_t> ascii_start = header.ascii_start)
   {
     std::ifstream in (path, std::ios::binary);
     if (std::optional<PlyVertexLayout> layout = plainAsciiPlyLayout (in))
@@ -301,7 +302,15 @@ readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
     }
     checkPlyAsciiData (path, *ascii_start);
   }
-  return pcl::io::loadPLYFile (path, cloud);
+  if (!header.size_problem.empty ())
+    fail (path, "malformed PLY file: " + header.size_problem);
+  const int status = pcl::io::loadPLYFile (path, cloud);
+  // A camera element's viewport, read with the data, resizes the cloud too.
+  if (status >= 0 && std::uint64_t (cloud.width) * cloud.height != header.points)
+    fail (path, "malformed PLY file: a camera's viewport or obj_info says " +
+                    std::to_string (std::uint64_t (cloud.width) * cloud.height) + " points, not the " +
+                    std::to_string (header.points) + " it holds");
+  return status;
 }
 
 PointFile

@@ -13,12 +13,14 @@
 
 #include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <unistd.h>
@@ -173,7 +175,6 @@ TEST (PlyAscii, OtherHeadersAreLeftToPcl)
   const std::string data = "end_header\n1 2 3\n";
   const std::string headers[] = {
       "ply\nformat binary_little_endian 1.0\n" + vertex + data,
-      "ply\nformat ascii 1.0\nobj_info num_cols 1\n" + vertex + data,
       "ply\nformat ascii 1.0\nelement camera 1\nproperty float view_px\n" + vertex + "end_header\n0\n1 2 3\n",
       "ply\nformat ascii 1.0\n" + vertex + "element camera 1\nproperty float view_px\nend_header\n1 2 3\n0\n",
       "ply\nformat ascii 1.0\n" + vertex + "property list uchar float extra\n" + "end_header\n1 2 3 1 0\n",
@@ -192,8 +193,84 @@ TEST (PlyAscii, OtherHeadersAreLeftToPcl)
     EXPECT_FALSE (apps::plainAsciiPlyLayout (in));
   }
   // Such a file is still read, by PCL's reader.
-  writeFile ("ply\nformat ascii 1.0\nobj_info a scanner\n" + vertex + data);
+  writeFile ("ply\nformat ascii 1.0\nelement camera 1\nproperty float view_px\n" + vertex + "end_header\n0\n1 2 3\n");
   EXPECT_EQ (apps::readPointFile (PATH).points.size (), 1u);
+  std::remove (PATH.c_str ());
+}
+
+TEST (PlyFile, PclsOwnFilesOfCloudsWithNanPointsGiveTheirFinitePoints)
+{
+  // Without a camera element, PCL's ASCII writer leaves NaN points out of the vertices but not out
+  // of obj_info's num_cols, and an organised cloud gets a range grid; with one, every point is
+  // written, as the binary writer writes them.
+  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 6; ++i)
+    cloud.push_back (i % 3 == 1 ? pcl::PointXYZ (nan, nan, nan) : pcl::PointXYZ (float (i), 2.0f * float (i), 1.0f));
+  const auto finite = [] (const apps::PointFile& file) {
+    std::vector<Point3> out;
+    for (const Point3& p : file.points)
+      if (std::isfinite (p[0]) && std::isfinite (p[1]) && std::isfinite (p[2]))
+        out.push_back (p);
+    return out;
+  };
+  const std::vector<Point3> expected = {{0, 0, 1}, {2, 4, 1}, {3, 6, 1}, {5, 10, 1}};
+  for (const bool organised : {false, true})
+    for (const bool binary : {false, true})
+      for (const bool camera : {false, true})
+      {
+        SCOPED_TRACE (std::string (organised ? "organised " : "") + (binary ? "binary" : "ASCII") +
+                      (camera ? " with a camera" : ""));
+        cloud.width = organised ? 3 : 6;
+        cloud.height = organised ? 2 : 1;
+        cloud.is_dense = false;
+        ASSERT_EQ (pcl::PLYWriter ().write (PATH, cloud, binary, camera), 0);
+        const apps::PointFile read = apps::readPointFile (PATH);
+        EXPECT_EQ (finite (read), expected);
+        EXPECT_LE (read.points.size (), 6u);
+      }
+  std::remove (PATH.c_str ());
+}
+
+TEST (PlyFile, HeadersThatMisleadPclsReaderAreRefused)
+{
+  const std::string vertex = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string ascii = "end_header\n0 0 0\n1 0 0\n0 1 0\n";
+  const std::string binary = "end_header\n" + std::string (36, '\0');
+  const std::pair<std::string, std::string> cases[] = {
+      // fewer places than vertices: PCL's reader would write past the cloud
+      {"ply\nformat binary_little_endian 1.0\nobj_info num_cols 1\nobj_info num_rows 1\n" + vertex + binary,
+       "obj_info's num_cols x num_rows is 1 points, the vertex element 3"},
+      // more, without a range grid: it would add points of zeros
+      {"ply\nformat binary_little_endian 1.0\n" + vertex + "obj_info num_cols 4\nobj_info num_rows 2\n" + binary,
+       "obj_info's num_cols x num_rows is 8 points, the vertex element 3"},
+      // a blank before obj_info, in either line-end convention: an assertion in PCL's reader
+      {"ply\nformat ascii 1.0\n obj_info num_cols 3\n" + vertex + ascii,
+       "an obj_info line that does not start with obj_info"},
+      {"ply\r\nformat binary_little_endian 1.0\r\n\tobj_info num_cols 3\r\n",
+       "an obj_info line that does not start with obj_info"},
+      {"ply obj_info num_cols 1\nformat ascii 1.0\nobj_info num_rows 1\n" + vertex + ascii, "no ply magic"},
+      {"ply\r\nformat ascii 1.0\nend_header\r\n", "a header line not ended by \"\\r\\n\" where the first one is"},
+      {"ply\nformat ascii 1.0\n" + vertex + vertex + ascii + "0 0 0\n1 0 0\n0 1 0\n",
+       "a second vertex element, or more than 2^32 - 1 vertices"},
+      // a camera's viewport read with the data resizes the cloud
+      {"ply\nformat ascii 1.0\nelement camera 1\nproperty int viewportx\nproperty int viewporty\n" + vertex +
+           "end_header\n1 1\n0 0 0\n1 0 0\n0 1 0\n",
+       "a camera's viewport or obj_info says 1 points, not the 3 it holds"},
+      // a range grid of other cells than num_cols x num_rows
+      {"ply\nformat ascii 1.0\nobj_info num_cols 2\nobj_info num_rows 2\n" + vertex +
+           "element range_grid 5\nproperty list uchar int vertex_indices\n" + ascii + "1 0\n1 1\n1 2\n0\n0\n",
+       "obj_info's num_cols x num_rows is 4 points, the range grid 5"},
+  };
+  for (const auto& [text, message] : cases)
+  {
+    SCOPED_TRACE (text);
+    writeFile (text);
+    EXPECT_EQ (pointFileError (PATH), PATH + ": malformed PLY file: " + message);
+  }
+  // Places for every vertex, as PCL's writer declares them, read as the vertices alone.
+  writeFile ("ply\nformat ascii 1.0\nobj_info num_cols 5\nobj_info num_rows 1\n" + vertex + ascii);
+  EXPECT_EQ (apps::readPointFile (PATH).points.size (), 3u);
   std::remove (PATH.c_str ());
 }
 
