@@ -159,7 +159,19 @@ checkPlyHeader (const std::string& path)
   std::ifstream in (path, std::ios::binary);
   std::string line, format;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> elements; // count, least bytes per item
-  bool vertex = false, red = false;                              // in the vertex element; a uchar red seen there
+  bool vertex = false;                                           // in the vertex element
+  // Where the vertex's uchar colours are: none yet, after red, after green, after blue.
+  enum class Colour
+  {
+    NONE,
+    RED,
+    GREEN,
+    BLUE
+  } colour = Colour::NONE;
+  // PCL's reader makes a uchar red a packed "rgb" field, writes it at blue and moves on only there:
+  // anything between red and blue, a second red, or a colour without red before it is misplaced or
+  // written past the point (an assertion fails; found by fuzzing); alpha before blue is lost.
+  const auto bad_colours = [&] { bad ("vertex colours not as red, green, blue in a row, then alpha"); };
   // The cloud's size as PCL's reader sets it: obj_info's num_cols and num_rows, else the vertices.
   std::uint32_t width = 0, height = 0;
   std::uint64_t vertices = 0, range_grid = 0;
@@ -186,9 +198,10 @@ checkPlyHeader (const std::string& path)
       double count = -1;
       if (!(words >> name >> count) || count < 0 || count != std::floor (count) || count > 1e15)
         bad ("bad element line");
+      if (colour == Colour::RED || colour == Colour::GREEN)
+        bad_colours ();
       elements.emplace_back (static_cast<std::uint64_t> (count), 0);
       vertex = name == "vertex";
-      red = false;
       if (vertex)
       {
         if (++vertex_elements > 1 || count > 0xffffffffu)
@@ -241,17 +254,20 @@ checkPlyHeader (const std::string& path)
       // by fuzzing), and any list longer than one misplaces what follows it.
       if (vertex && list)
         bad ("a list property in the vertex element");
-      // PCL's reader packs a vertex's uchar colours where red was; without red before them, it
-      // writes past the point (an assertion fails; found by fuzzing).
       std::string name;
       words >> name;
-      if (vertex && field_type == pcl::PCLPointField::UINT8)
+      if (vertex)
       {
-        const bool component =
-            name == "green" || name == "blue" || name == "alpha" || name == "diffuse_green" || name == "diffuse_blue";
-        red = red || name == "red" || name == "diffuse_red";
-        if (component && !red)
-          bad ("vertex colour '" + name + "' before red");
+        const bool byte = field_type == pcl::PCLPointField::UINT8 && !list;
+        const bool is_red = byte && (name == "red" || name == "diffuse_red");
+        const bool is_green = byte && (name == "green" || name == "diffuse_green");
+        const bool is_blue = byte && (name == "blue" || name == "diffuse_blue");
+        if ((is_red && colour != Colour::NONE) || (is_green && colour != Colour::RED) ||
+            (is_blue && colour != Colour::RED && colour != Colour::GREEN) ||
+            (byte && name == "alpha" && colour != Colour::BLUE) ||
+            (!is_red && !is_green && !is_blue && (colour == Colour::RED || colour == Colour::GREEN)))
+          bad_colours ();
+        colour = is_red ? Colour::RED : is_green ? Colour::GREEN : is_blue ? Colour::BLUE : colour;
       }
       // ASCII: a digit and a space.
       elements.back ().second += format == "ascii" ? 2 : pcl::getFieldSize (field_type);
@@ -259,6 +275,8 @@ checkPlyHeader (const std::string& path)
   }
   if (!in)
     bad ("no end_header");
+  if (colour == Colour::RED || colour == Colour::GREEN)
+    bad_colours ();
   // PCL reads "end_header" only as a word of its own, and takes a line that merely starts with it
   // as more header (found by fuzzing: an element declared there was never checked here).
   if (line.find_first_not_of (" \t\r", 10) != std::string::npos || (cr && line.back () != '\r'))

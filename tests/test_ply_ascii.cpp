@@ -237,6 +237,7 @@ TEST (PlyFile, HeadersThatMisleadPclsReaderAreRefused)
   const std::string vertex = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
   const std::string ascii = "end_header\n0 0 0\n1 0 0\n0 1 0\n";
   const std::string binary = "end_header\n" + std::string (36, '\0');
+  const std::string colours = "vertex colours not as red, green, blue in a row, then alpha";
   const std::pair<std::string, std::string> cases[] = {
       // fewer places than vertices: PCL's reader would write past the cloud
       {"ply\nformat binary_little_endian 1.0\nobj_info num_cols 1\nobj_info num_rows 1\n" + vertex + binary,
@@ -257,6 +258,20 @@ TEST (PlyFile, HeadersThatMisleadPclsReaderAreRefused)
       {"ply\nformat ascii 1.0\nelement camera 1\nproperty int viewportx\nproperty int viewporty\n" + vertex +
            "end_header\n1 1\n0 0 0\n1 0 0\n0 1 0\n",
        "a camera's viewport or obj_info says 1 points, not the 3 it holds"},
+      // colours that PCL's reader misplaces, or writes past the point
+      {"ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar red\nproperty float x\nproperty float y\n"
+       "property float z\nproperty uchar green\nproperty uchar blue\nend_header\n9 0 0 1 1 2\n",
+       colours},
+      {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+       "property uchar red\nproperty uchar blue\nproperty uchar diffuse_blue\nend_header\n0 0 1 1 2 3\n",
+       colours},
+      {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+       "property uchar red\nproperty uchar green\nend_header\n0 0 1 1 2\n",
+       colours},
+      {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+       "property uchar red\nproperty uchar green\nproperty uchar alpha\nproperty uchar blue\nend_header\n0 0 1 1 2 3 "
+       "4\n",
+       colours},
       // a range grid of other cells than num_cols x num_rows
       {"ply\nformat ascii 1.0\nobj_info num_cols 2\nobj_info num_rows 2\n" + vertex +
            "element range_grid 5\nproperty list uchar int vertex_indices\n" + ascii + "1 0\n1 1\n1 2\n0\n0\n",
