@@ -222,7 +222,7 @@ checkPlyHeader (const std::string& path)
     else if (keyword == "obj_info")
     {
       // PCL's reader splits the line at blanks and tabs, fails an assertion unless its first word
-      // starts with "obj_info" (found by fuzzing), and reads num_cols and num_rows with atoi.
+      // starts with "obj_info", and reads num_cols and num_rows with atoi.
       if (line.compare (0, 8, "obj_info") != 0)
         bad ("an obj_info line that does not start with obj_info");
       std::vector<std::string> parts;
@@ -297,7 +297,7 @@ checkPlyHeader (const std::string& path)
   PlyHeaderCheck check;
   check.ascii_start = format == "ascii" ? std::optional<std::uint64_t> (start) : std::nullopt;
   // PCL's reader sizes the cloud as num_cols x num_rows and writes the vertices into it: fewer
-  // places fail an assertion (found by fuzzing), more leave points of zeros after the vertices
+  // places fail an assertion, more leave points of zeros after the vertices
   // (PCL's own ASCII writer declares fewer vertices than places for a cloud with NaN points). A
   // range grid then moves the vertices to its cells, one place each.
   const std::uint64_t places = std::uint64_t (width) * height;
