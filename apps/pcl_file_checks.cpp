@@ -172,11 +172,12 @@ checkPlyHeader (const std::string& path)
   // anything between red and blue, a second red, or a colour without red before it is misplaced or
   // written past the point (an assertion fails; found by fuzzing); alpha before blue is lost.
   const auto bad_colours = [&] { bad ("vertex colours not as red, green, blue in a row, then alpha"); };
+  const auto red_without_blue = [&] { return colour == Colour::RED || colour == Colour::GREEN; };
   // The cloud's size as PCL's reader sets it: obj_info's num_cols and num_rows, else the vertices.
   std::uint32_t width = 0, height = 0;
-  std::uint64_t vertices = 0, range_grid = 0;
+  std::uint64_t vertices = 0;
+  std::optional<std::uint64_t> range_grid; // its cells
   int vertex_elements = 0;
-  bool has_range_grid = false;
   // PCL's reader takes the fourth byte for the magic's end: a '\r' there makes it end header lines at
   // '\r' and skip the byte after each. Lines that end in "\r\n" alone read the same either way.
   if (!std::getline (in, line) || line.compare (0, 3, "ply") != 0 ||
@@ -198,7 +199,7 @@ checkPlyHeader (const std::string& path)
       double count = -1;
       if (!(words >> name >> count) || count < 0 || count != std::floor (count) || count > 1e15)
         bad ("bad element line");
-      if (colour == Colour::RED || colour == Colour::GREEN)
+      if (red_without_blue ())
         bad_colours ();
       elements.emplace_back (static_cast<std::uint64_t> (count), 0);
       vertex = name == "vertex";
@@ -214,10 +215,7 @@ checkPlyHeader (const std::string& path)
         }
       }
       if (name == "range_grid")
-      {
-        has_range_grid = true;
         range_grid = static_cast<std::uint64_t> (count);
-      }
     }
     else if (keyword == "obj_info")
     {
@@ -258,14 +256,14 @@ checkPlyHeader (const std::string& path)
       words >> name;
       if (vertex)
       {
-        const bool byte = field_type == pcl::PCLPointField::UINT8 && !list;
+        const bool byte = field_type == pcl::PCLPointField::UINT8;
         const bool is_red = byte && (name == "red" || name == "diffuse_red");
         const bool is_green = byte && (name == "green" || name == "diffuse_green");
         const bool is_blue = byte && (name == "blue" || name == "diffuse_blue");
         if ((is_red && colour != Colour::NONE) || (is_green && colour != Colour::RED) ||
             (is_blue && colour != Colour::RED && colour != Colour::GREEN) ||
             (byte && name == "alpha" && colour != Colour::BLUE) ||
-            (!is_red && !is_green && !is_blue && (colour == Colour::RED || colour == Colour::GREEN)))
+            (!is_red && !is_green && !is_blue && red_without_blue ()))
           bad_colours ();
         colour = is_red ? Colour::RED : is_green ? Colour::GREEN : is_blue ? Colour::BLUE : colour;
       }
@@ -275,7 +273,7 @@ checkPlyHeader (const std::string& path)
   }
   if (!in)
     bad ("no end_header");
-  if (colour == Colour::RED || colour == Colour::GREEN)
+  if (red_without_blue ())
     bad_colours ();
   // PCL reads "end_header" only as a word of its own, and takes a line that merely starts with it
   // as more header (found by fuzzing: an element declared there was never checked here).
@@ -301,10 +299,10 @@ checkPlyHeader (const std::string& path)
   // (PCL's own ASCII writer declares fewer vertices than places for a cloud with NaN points). A
   // range grid then moves the vertices to its cells, one place each.
   const std::uint64_t places = std::uint64_t (width) * height;
-  check.points = has_range_grid ? range_grid : vertices;
+  check.points = range_grid.value_or (vertices);
   if (vertex_elements == 1 && (places != check.points || vertices > places))
     check.size_problem = "obj_info's num_cols x num_rows is " + std::to_string (places) + " points, the " +
-                         (has_range_grid ? "range grid " : "vertex element ") + std::to_string (check.points);
+                         (range_grid ? "range grid " : "vertex element ") + std::to_string (check.points);
   return check;
 }
 

@@ -306,10 +306,10 @@ readPly (const std::string& path, pcl::PCLPointCloud2& cloud)
     fail (path, "malformed PLY file: " + header.size_problem);
   const int status = pcl::io::loadPLYFile (path, cloud);
   // A camera element's viewport, read with the data, resizes the cloud too.
-  if (status >= 0 && std::uint64_t (cloud.width) * cloud.height != header.points)
-    fail (path, "malformed PLY file: a camera's viewport or obj_info says " +
-                    std::to_string (std::uint64_t (cloud.width) * cloud.height) + " points, not the " +
-                    std::to_string (header.points) + " it holds");
+  const std::uint64_t read = std::uint64_t (cloud.width) * cloud.height;
+  if (status >= 0 && read != header.points)
+    fail (path, "malformed PLY file: a camera's viewport or obj_info says " + std::to_string (read) +
+                    " points, not the " + std::to_string (header.points) + " it holds");
   return status;
 }
 
