@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""usage: bench/noisy_corpus.py BUILD_DIR [SEEDS] [--noise K,K,...] [--cases NAME,NAME,...] [--keep DIR] [--check]
+"""usage: bench/noisy_corpus.py BUILD_DIR [SEEDS] [--seeds S,S,...] [--noise K,K,...] [--cases NAME,NAME,...] [--keep DIR] [--check]
 
 The synthetic shapes of bench/corpus.py (voids, parts, holes, bridges, separate objects, outliers)
 with Gaussian noise of K times their median spacing (0.25, 0.5 and 1 unless --noise says
-otherwise), each drawn from seeds 1 to SEEDS (default 5). A Markdown table, a row per case, a
+otherwise), each drawn from seeds 1 to SEEDS (default 5), or from the seeds --seeds lists. A Markdown table, a row per case, a
 column per noise: how many default surfaces come out right (closed and manifold, the case's
 components and genus, at least 99% of the points on it: bench/corpus_table.py's test), and what
 the others are (components, genus, share of the points on the surface). With --keep, each cloud
@@ -45,9 +45,11 @@ def main():
     check = "--check" in args
     if check:
         args.remove("--check")
+    listed = option(args, "--seeds", None)
     if not args:
         sys.exit(__doc__)
-    build, seeds = os.path.abspath(args[0]), int(args[1]) if len(args) > 1 else 5
+    build = os.path.abspath(args[0])
+    seeds = [int(s) for s in listed] if listed else list(range(1, (int(args[1]) if len(args) > 1 else 5) + 1))
     cases = [c for c in corpus.cases(True) if c[0] in CLASSES and (names is None or c[1] in names)]
     print("| class | case | points | expected | " + " | ".join("noise %g" % k for k in noise) + " |")
     print("|---|---|---|---|" + "---|" * len(noise))
@@ -57,7 +59,7 @@ def main():
             cells, points = [], 0
             for k in noise:
                 right, others = 0, []
-                for seed in range(1, seeds + 1):
+                for seed in seeds:
                     corpus.rng = np.random.default_rng(seed)
                     p = make()
                     points = len(p)
@@ -71,7 +73,7 @@ def main():
                     else:
                         others.append("c%d g%s %.1f%%" % (q["components"], q["genus"], 100 * q["points_on_output"]))
                         wrong.append((name, k, seed))
-                cells.append("%d of %d%s" % (right, seeds, ": " + ", ".join(others) if others else ""))
+                cells.append("%d of %d%s" % (right, len(seeds), ": " + ", ".join(others) if others else ""))
             print("| %s | %s | %d | c%d g%d | %s |" % (cls, name, points, components, genus, " | ".join(cells)),
                   flush=True)
     if check and wrong:

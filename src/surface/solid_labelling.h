@@ -32,11 +32,29 @@ struct SolidLabels
   /** Per vertex: its group of the sample (SampleGroups::group), where there is more than one;
     * else empty. */
   std::vector<std::uint32_t> group;
-  /** Are the four vertices \a v of a tetrahedron in one group of the sample? One across the gap
-    * between two groups ties separate objects, or a blob to an object: a spike. */
+  /** Per vertex: the object it samples (cutTiesAcrossVoids()'s clusters, named by one of their
+    * vertices) where that object faces another across a void, as a ball inside a hollow sphere
+    * faces the sphere's inner wall; NOT_FACING elsewhere. Empty where no object does. */
+  std::vector<std::uint32_t> facing;
+  static constexpr std::uint32_t NOT_FACING = ~std::uint32_t (0);
+
+  /** Are the four vertices \a v of a tetrahedron in one group of the sample, and on at most one
+    * of the objects that face each other across a void? One across the gap between two groups
+    * ties separate objects, or a blob to an object: a spike; one across a void ties the objects
+    * on its two sides. */
   bool oneGroup (const std::uint32_t* v) const
   {
-    return group.empty () || (group[v[0]] == group[v[1]] && group[v[0]] == group[v[2]] && group[v[0]] == group[v[3]]);
+    if (!group.empty () && (group[v[0]] != group[v[1]] || group[v[0]] != group[v[2]] || group[v[0]] != group[v[3]]))
+      return false;
+    std::uint32_t object = NOT_FACING;
+    for (int i = 0; i < 4 && !facing.empty (); ++i)
+      if (facing[v[i]] != NOT_FACING)
+      {
+        if (object != NOT_FACING && facing[v[i]] != object)
+          return false;
+        object = facing[v[i]];
+      }
+    return true;
   }
   /** May a tetrahedron with the four vertices \a v move into the solid to bring a point on? Not
     * with a corner apart from all other points, nor across the gap between two groups: the surface

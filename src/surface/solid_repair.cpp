@@ -8,6 +8,7 @@
 #include "surface/solid_parts.h"
 #include "surface/solid_voids.h"
 #include "surface/surface_handles.h"
+#include "surface/void_ties.h"
 #include "util/parallel_for_each.h"
 #include "util/union_find.h"
 #include "wrap/boundary.h"
@@ -103,13 +104,23 @@ public:
       // A volume's solid is X's: its parts are not joined.
       SideParts sides (tetrahedra_, labels_.inside,
                        stays_buried_.empty () ? SideParts::Sides::both : SideParts::Sides::outside);
-      done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_, sides).size ();
+      std::vector<std::uint32_t> in_voids; // those it keeps, sampled by the points
+      done.flipped += fillUnsampledVoids (tetrahedra_, labels_, flipped_, sides, &in_voids).size ();
       if (stays_buried_.empty ()) // not a volume, whose solid is X's
       {
+        // The ties across voids between separate objects, cut: the solid's parts are then found
+        // again.
+        const std::vector<std::uint32_t> untied =
+            cutTiesAcrossVoids (tetrahedra_, positions_, in_voids, labels_, flipped_, sides);
+        done.flipped += untied.size ();
+        std::optional<SideParts> found_again;
+        if (!untied.empty ())
+          found_again.emplace (tetrahedra_, labels_.inside, SideParts::Sides::solid);
         // The parts the labelling cut apart, joined while their fragments are small, then the
         // points it left floating between them, brought on (each by a path to the solid).
         const SolidJoin join =
-            joinPartsThroughX (tetrahedra_, x, positions_, sides.solid (labels_.inside), labels_, flipped_);
+            joinPartsThroughX (tetrahedra_, x, positions_, (found_again ? *found_again : sides).solid (labels_.inside),
+                               labels_, flipped_);
         done.flipped += join.moved.size ();
         done.flipped += bringFloatingPointsOn (tetrahedra_, x, positions_, labels_, flipped_).size ();
         one_part = join.parts == 1;

@@ -21,23 +21,34 @@ fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vect
   return fillUnsampledVoids (tetrahedra, labels, moved, sides);
 }
 
+namespace
+{
+
+/** The tetrahedra outside the solid \a inside in a part of the outside that does not reach the
+  * convex hull (\a sides: the parts of the outside, or of both sides): the voids', ascending. */
 std::vector<std::uint32_t>
-fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
-                    SideParts& sides)
+tetrahedraInVoids (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside, SideParts& sides)
 {
   const std::size_t n = tetrahedra.size ();
-  const std::vector<std::uint8_t>& inside = labels.inside;
   // A part reaching the hull is the outside; the others are voids, most of them a few tetrahedra.
   std::unique_ptr<std::atomic<std::uint8_t>[]> open (new std::atomic<std::uint8_t>[n]());
   parallelForEach (n, [&] (std::size_t t) {
     if (!inside[t] && tetrahedra.onHull (static_cast<std::uint32_t> (t)))
       open[sides.part (static_cast<std::uint32_t> (t))].store (1, std::memory_order_relaxed);
   });
-  const auto inVoid = [&] (std::size_t t) {
+  return indicesWhere (n, [&] (std::size_t t) {
     return !inside[t] && !open[sides.part (static_cast<std::uint32_t> (t))].load (std::memory_order_relaxed);
-  };
-  const std::vector<std::uint32_t> in_voids = indicesWhere (n, inVoid); // ascending
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners;         // (void, vertex)
+  });
+}
+
+} // namespace
+
+std::vector<std::uint32_t>
+fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
+                    SideParts& sides, std::vector<std::uint32_t>* kept)
+{
+  const std::vector<std::uint32_t> in_voids = tetrahedraInVoids (tetrahedra, labels.inside, sides);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners; // (void, vertex)
   for (std::uint32_t t : in_voids)
     for (int i = 0; i < 4; ++i)
       corners.emplace_back (sides.part (t), tetrahedra.vertex (t, i));
@@ -54,6 +65,8 @@ fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vect
       moved[t] = 1;
       filled.push_back (t);
     }
+    else if (kept)
+      kept->push_back (t);
   sides.movedInside (filled);
   return filled;
 }

@@ -19,10 +19,11 @@ namespace pcl_wrap::detail
   * \param[in,out] moved per tetrahedron, set for those it moves
   * \param[in,out] sides the parts of the outside of \a labels, or of both sides; the voids filled
   *                join the solid's
+  * \param[out] kept if given, the tetrahedra of the voids it keeps are appended, ascending
   * \return the tetrahedra it moved inside, ascending */
 std::vector<std::uint32_t>
 fillUnsampledVoids (const Tetrahedra& tetrahedra, SolidLabels& labels, std::vector<std::uint8_t>& moved,
-                    SideParts& sides);
+                    SideParts& sides, std::vector<std::uint32_t>* kept = nullptr);
 
 /** \brief fillUnsampledVoids() with the parts found here. */
 std::vector<std::uint32_t>
