@@ -84,6 +84,10 @@ runMpi (int ranks, const std::string& arguments, const fs::path& log)
   // mpirun refuses root unless told; the containers the tests run in often are root.
   ::setenv ("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   ::setenv ("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  // Open MPI keeps its session files under one directory per user and host, which the run that
+  // ends first removes: two test processes running mpirun at once (ctest -j) then race, and one
+  // fails in orte_init. Each test process gets a session directory of its own.
+  ::setenv ("OMPI_MCA_orte_tmpdir_base", scratch ().c_str (), 1);
   const std::string command = std::string (PCL_WRAP_MPIRUN) + " --oversubscribe -np " + std::to_string (ranks) + " " +
                               PCL_WRAP_MPI_CLI + " " + arguments + " > " + log.string () + " 2>&1";
   const int status = std::system (command.c_str ());
