@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""usage: bench/noisy_corpus.py BUILD_DIR [SEEDS] [--seeds S,S,...] [--noise K,K,...] [--cases NAME,NAME,...] [--keep DIR] [--check]
+"""usage: bench/noisy_corpus.py BUILD_DIR [SEEDS] [--seeds S,S,...] [--noise K,K,...] [--cases NAME,NAME,...]
+                               [--keep DIR] [--check]
 
 The synthetic shapes of bench/corpus.py (voids, parts, holes, bridges, separate objects, outliers)
 with Gaussian noise of K times their median spacing (0.25, 0.5 and 1 unless --noise says
-otherwise), each drawn from seeds 1 to SEEDS (default 5), or from the seeds --seeds lists. A Markdown table, a row per case, a
-column per noise: how many default surfaces come out right (closed and manifold, the case's
+otherwise), each drawn from seeds 1 to SEEDS (default 5), or from the seeds --seeds lists. A
+Markdown table, a row per case, a column per noise: how many default surfaces come out right (closed and manifold, the case's
 components and genus, at least 99% of the points on it: bench/corpus_table.py's test), and what
 the others are (components, genus, share of the points on the surface). With --keep, each cloud
 is also written to DIR/CASE_noise_K_seed_S.xyz (for bench/corpus_pictures.sh). With --check, exits

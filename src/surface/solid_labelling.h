@@ -46,8 +46,10 @@ struct SolidLabels
   {
     if (!group.empty () && (group[v[0]] != group[v[1]] || group[v[0]] != group[v[2]] || group[v[0]] != group[v[3]]))
       return false;
+    if (facing.empty ())
+      return true;
     std::uint32_t object = NOT_FACING;
-    for (int i = 0; i < 4 && !facing.empty (); ++i)
+    for (int i = 0; i < 4; ++i)
       if (facing[v[i]] != NOT_FACING)
       {
         if (object != NOT_FACING && facing[v[i]] != object)

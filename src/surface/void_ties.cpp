@@ -155,7 +155,7 @@ cutTiesAcrossVoids (const Tetrahedra& tetrahedra, const std::vector<Point3>& pos
       c[i] = clusters.of[tetrahedra.vertex (static_cast<std::uint32_t> (t), i)];
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
-        if (c[i] != c[j] && clusters.large (c[i]) && clusters.large (c[j]) && shareAVoid (c[i], c[j]))
+        if (c[i] != c[j] && faces[c[i]] && faces[c[j]] && shareAVoid (c[i], c[j]))
           return true;
     return false;
   });
