@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <stdexcept>
 #include <utility>
 
 namespace pcl_wrap::detail
@@ -22,40 +23,70 @@ namespace
 using Triangle = std::array<std::uint32_t, 3>;
 using Edge = std::array<std::uint32_t, 2>;
 
-/** The triangles around each vertex: those of vertex v are triangle[begin[v] .. begin[v + 1]),
-  * ascending; found on all threads. */
+/** The triangles around each vertex, each with its other two corners, so that a search over the
+  * surface reads a vertex's neighbours from one run of memory: those of vertex v are
+  * corner[begin[v] .. begin[v + 1]), by ascending triangle; found on all threads. */
 struct TrianglesAround
 {
+  /** A triangle seen from one of its corners, v. */
+  struct Corner
+  {
+    std::uint32_t tagged;                ///< the triangle, and in the top two bits which of its corners v is
+    std::array<std::uint32_t, 2> others; ///< the triangle's other corners, in its order
+
+    std::uint32_t triangle () const { return tagged & ~AT_MASK; }
+    int at () const { return static_cast<int> (tagged >> AT_SHIFT); }
+    /** The corner before v going round the triangle: the triangle has the edge from it to v. */
+    std::uint32_t previous () const { return others[at () == 1 ? 0 : 1]; }
+    /** The corner after v. */
+    std::uint32_t next () const { return others[at () == 1 ? 1 : 0]; }
+    /** The triangle, its corners in its order, v among them. */
+    Triangle corners (std::uint32_t v) const
+    {
+      const int i = at ();
+      return i == 0   ? Triangle{v, others[0], others[1]}
+             : i == 1 ? Triangle{others[0], v, others[1]}
+                      : Triangle{others[0], others[1], v};
+    }
+  };
+  static constexpr int AT_SHIFT = 30;
+  static constexpr std::uint32_t AT_MASK = std::uint32_t (3) << AT_SHIFT;
+
   std::vector<std::size_t> begin;
-  FilledInParallel<std::uint32_t> triangle;
+  FilledInParallel<Corner> corner;
 
   TrianglesAround (const std::vector<Triangle>& triangles, std::uint32_t n)
-    : triangle (bucketInParallel<std::uint32_t> (
-          triangles.size (), n,
-          [&] (std::size_t t, auto put) {
-            for (std::uint32_t v : triangles[t])
-              put (v, static_cast<std::uint32_t> (t));
+    : corner (bucketInParallel<Corner> (
+          checkedCount (triangles.size ()), n,
+          [&] (std::size_t k, auto put) {
+            const Triangle& t = triangles[k];
+            const auto id = static_cast<std::uint32_t> (k);
+            put (t[0], Corner{id, {t[1], t[2]}});
+            put (t[1], Corner{id | (1u << AT_SHIFT), {t[0], t[2]}});
+            put (t[2], Corner{id | (2u << AT_SHIFT), {t[0], t[1]}});
           },
           begin))
   {}
-};
 
-/** Of the \a count triangles \a triangle (k), the opposite vertex of the last with the edge from
-  * \a b to \a a; \a a where none has it. */
-template <class TriangleAt>
-std::uint32_t
-oppositeOfEdge (std::size_t count, const TriangleAt& triangle, std::uint32_t a, std::uint32_t b)
-{
-  std::uint32_t found = a;
-  for (std::size_t k = 0; k < count; ++k)
+  /** The opposite vertex of the last triangle around \a a with the edge from \a b to \a a; \a a
+    * where none has it. */
+  std::uint32_t oppositeOfEdge (std::uint32_t a, std::uint32_t b) const
   {
-    const Triangle& u = triangle (k);
-    for (int j = 0; j < 3; ++j)
-      if (u[j] == b && u[(j + 1) % 3] == a)
-        found = u[(j + 2) % 3];
+    std::uint32_t found = a;
+    for (std::size_t k = begin[a]; k < begin[a + 1]; ++k)
+      if (corner[k].previous () == b)
+        found = corner[k].next ();
+    return found;
   }
-  return found;
-}
+
+private:
+  static std::size_t checkedCount (std::size_t triangles)
+  {
+    if (triangles > ~AT_MASK)
+      throw std::length_error ("pcl_wrap: a surface of 2^30 triangles or more");
+    return triangles;
+  }
+};
 
 /** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to the
   * next), found among the triangles around the edge's first vertex; t's vertex i where the edge is
@@ -63,33 +94,22 @@ oppositeOfEdge (std::size_t count, const TriangleAt& triangle, std::uint32_t a, 
 std::uint32_t
 oppositeVertex (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t t, int i)
 {
-  const std::uint32_t a = triangles[t][i];
-  const std::size_t first = around.begin[a];
-  return oppositeOfEdge (
-      around.begin[a + 1] - first,
-      [&] (std::size_t k) -> const Triangle& { return triangles[around.triangle[first + k]]; }, a,
-      triangles[t][(i + 1) % 3]);
+  return around.oppositeOfEdge (triangles[t][i], triangles[t][(i + 1) % 3]);
 }
 
 /** oppositeVertex() of every triangle and edge, found on all threads: at each vertex a, for the
-  * edges that start at a, among the triangles around a, read once. */
+  * edges that start at a, among the triangles around a. */
 std::vector<std::array<std::uint32_t, 3>>
-oppositeVertices (const std::vector<Triangle>& triangles, const TrianglesAround& around)
+oppositeVertices (const TrianglesAround& around, std::size_t num_triangles)
 {
-  std::vector<std::array<std::uint32_t, 3>> opposite (triangles.size ());
-  const std::size_t num_vertices = around.begin.size () - 1;
-  tbb::enumerable_thread_specific<std::vector<Triangle>> scratch;
-  parallelForEach (num_vertices, [&] (std::size_t vertex) {
+  std::vector<std::array<std::uint32_t, 3>> opposite (num_triangles);
+  parallelForEach (around.begin.size () - 1, [&] (std::size_t vertex) {
     const auto a = static_cast<std::uint32_t> (vertex);
-    std::vector<Triangle>& near = scratch.local ();
-    near.clear ();
     for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
-      near.push_back (triangles[around.triangle[k]]);
-    for (std::size_t k = 0; k < near.size (); ++k)
-      for (int i = 0; i < 3; ++i)
-        if (near[k][i] == a)
-          opposite[around.triangle[around.begin[a] + k]][i] = oppositeOfEdge (
-              near.size (), [&] (std::size_t m) -> const Triangle& { return near[m]; }, a, near[k][(i + 1) % 3]);
+    {
+      const TrianglesAround::Corner& c = around.corner[k];
+      opposite[c.triangle ()][c.at ()] = around.oppositeOfEdge (a, c.next ());
+    }
   });
   return opposite;
 }
@@ -196,7 +216,8 @@ public:
   HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, bool match_edges, int rings)
     : triangles_ (triangles),
       around_ (triangles, n),
-      opposite_ (match_edges ? oppositeVertices (triangles, around_) : std::vector<std::array<std::uint32_t, 3>>{}),
+      opposite_ (match_edges ? oppositeVertices (around_, triangles.size ())
+                             : std::vector<std::array<std::uint32_t, 3>>{}),
       n_ (n),
       rings_ (rings)
   {}
@@ -235,19 +256,20 @@ public:
     for (std::uint32_t u : s.vertices)
       for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
       {
-        const Triangle& t = triangles_[around_.triangle[k]];
+        const TrianglesAround::Corner& c = around_.corner[k];
+        const Triangle t = c.corners (u);
         if (u != std::min ({t[0], t[1], t[2]}) || s.in_patch[t[0]] != stamp || s.in_patch[t[1]] != stamp ||
             s.in_patch[t[2]] != stamp)
           continue;
         ++faces;
         for (int i = 0; i < 3; ++i)
         {
-          const std::uint32_t d = opposite (around_.triangle[k], i);
+          const std::uint32_t d = opposite (c.triangle (), i);
           if (d == t[i] || s.in_patch[d] != stamp)
           {
             ++boundary;
             s.edges.push_back ({t[i], t[(i + 1) % 3]});
-            s.edge_triangle.push_back (around_.triangle[k]);
+            s.edge_triangle.push_back (c.triangle ());
           }
         }
       }
@@ -338,9 +360,9 @@ public:
       }
       for (std::size_t k = around_.begin[w]; k < around_.begin[w + 1]; ++k)
       {
-        const Triangle& t = triangles_[around_.triangle[k]];
-        if (s.in_patch[t[0]] == stamp && s.in_patch[t[1]] == stamp && s.in_patch[t[2]] == stamp)
-          s.fans.push_back ({around_.triangle[k], 0});
+        const TrianglesAround::Corner& c = around_.corner[k];
+        if (s.in_patch[c.others[0]] == stamp && s.in_patch[c.others[1]] == stamp)
+          s.fans.push_back ({c.triangle (), 0});
       }
       // The fans: sets of triangles joined pairwise (a few), each set's root its least index.
       const auto here = static_cast<std::uint32_t> (s.fans.size () - first);
@@ -402,9 +424,8 @@ public:
     const std::size_t first = around_.begin[v];
     return linkShape (around_.begin[v + 1] - first,
                       [&] (std::size_t k) {
-                        const Triangle& t = triangles_[around_.triangle[first + k]];
-                        const int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-                        return std::make_pair (t[(at + 1) % 3], t[(at + 2) % 3]);
+                        const TrianglesAround::Corner& c = around_.corner[first + k];
+                        return std::make_pair (c.next (), c.previous ());
                       })
         .parts;
   }
@@ -456,9 +477,8 @@ private:
   void forNeighbours (std::uint32_t u, const F& f) const
   {
     for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
-      for (std::uint32_t w : triangles_[around_.triangle[k]])
-        if (w != u)
-          f (w);
+      for (std::uint32_t w : around_.corner[k].others)
+        f (w);
   }
 
   /** One ring of a search over the surface: the next front is the neighbours w of the front's
@@ -649,8 +669,8 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
   if (!on_handles && saddles.empty ())
     return out;
   // A search of a whole part finds the edges' opposite vertices first; one at its sharp saddles
-  // alone, as its patches need them.
-  const HandleFinder finder (triangles, num_vertices, on_handles && !wide, rings);
+  // alone, or near given vertices, as its patches need them.
+  const HandleFinder finder (triangles, num_vertices, on_handles && !wide && !near, rings);
   if (on_handles)
   {
     // Where the surface touches itself at a vertex (a pinch the mending left, split after the
