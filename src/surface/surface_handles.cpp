@@ -33,6 +33,9 @@ struct TrianglesAround
   {
     std::uint32_t tagged;                ///< the triangle, and in the top two bits which of its corners v is
     std::array<std::uint32_t, 2> others; ///< the triangle's other corners, in its order
+    /** The opposite vertex of the last triangle around v with the edge from next() to v (the
+      * other triangle on this one's edge from v), v where none has it. */
+    std::uint32_t across;
 
     std::uint32_t triangle () const { return tagged & ~AT_MASK; }
     int at () const { return static_cast<int> (tagged >> AT_SHIFT); }
@@ -61,11 +64,20 @@ struct TrianglesAround
           [&] (std::size_t k, auto put) {
             const Triangle& t = triangles[k];
             const auto id = static_cast<std::uint32_t> (k);
-            put (t[0], Corner{id, {t[1], t[2]}});
-            put (t[1], Corner{id | (1u << AT_SHIFT), {t[0], t[2]}});
-            put (t[2], Corner{id | (2u << AT_SHIFT), {t[0], t[1]}});
+            put (t[0], Corner{id, {t[1], t[2]}, 0});
+            put (t[1], Corner{id | (1u << AT_SHIFT), {t[0], t[2]}, 0});
+            put (t[2], Corner{id | (2u << AT_SHIFT), {t[0], t[1]}, 0});
           },
-          begin))
+          begin,
+          [] (std::size_t v, auto first, auto last) {
+            for (auto c = first; c != last; ++c)
+            {
+              c->across = static_cast<std::uint32_t> (v);
+              for (auto d = first; d != last; ++d)
+                if (d->previous () == c->next ())
+                  c->across = d->next ();
+            }
+          }))
   {}
 
   /** The opposite vertex of the last triangle around \a a with the edge from \a b to \a a; \a a
@@ -87,32 +99,6 @@ private:
     return triangles;
   }
 };
-
-/** The opposite vertex of the other triangle on edge i of triangle \a t (from its vertex i to the
-  * next), found among the triangles around the edge's first vertex; t's vertex i where the edge is
-  * on no other. */
-std::uint32_t
-oppositeVertex (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t t, int i)
-{
-  return around.oppositeOfEdge (triangles[t][i], triangles[t][(i + 1) % 3]);
-}
-
-/** oppositeVertex() of every triangle and edge, found on all threads: at each vertex a, for the
-  * edges that start at a, among the triangles around a. */
-std::vector<std::array<std::uint32_t, 3>>
-oppositeVertices (const TrianglesAround& around, std::size_t num_triangles)
-{
-  std::vector<std::array<std::uint32_t, 3>> opposite (num_triangles);
-  parallelForEach (around.begin.size () - 1, [&] (std::size_t vertex) {
-    const auto a = static_cast<std::uint32_t> (vertex);
-    for (std::size_t k = around.begin[a]; k < around.begin[a + 1]; ++k)
-    {
-      const TrianglesAround::Corner& c = around.corner[k];
-      opposite[c.triangle ()][c.at ()] = around.oppositeOfEdge (a, c.next ());
-    }
-  });
-  return opposite;
-}
 
 /** atan2 (y, x) for y >= 0, within 2e-5: a polynomial for the arc tangent on [0, 1]. */
 double
@@ -211,15 +197,8 @@ enum class HandleKind
 class HandleFinder
 {
 public:
-  /** With \a match_edges, the edges' opposite vertices are found first, all at once, for a search
-    * of a whole part; otherwise as a patch needs them. */
-  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, bool match_edges, int rings)
-    : triangles_ (triangles),
-      around_ (triangles, n),
-      opposite_ (match_edges ? oppositeVertices (around_, triangles.size ())
-                             : std::vector<std::array<std::uint32_t, 3>>{}),
-      n_ (n),
-      rings_ (rings)
+  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, int rings)
+    : triangles_ (triangles), around_ (triangles, n), n_ (n), rings_ (rings)
   {}
 
   /** Does the patch of rings_ rings around \a v hold a handle or go round a handle's tube?
@@ -249,8 +228,22 @@ public:
         return true;
       });
     // The patch's triangles (those with three vertices in it) and its boundary edges (on one of
-    // them): V - E + F with E = (3 F + boundary) / 2.
-    long faces = 0, boundary = 0;
+    // them): V - E + F with E = (3 F + boundary) / 2. Each is counted at its corners, from what
+    // lies around the corner's vertex alone: a triangle's edge at the corner it starts from.
+    long corners = 0, boundary = 0;
+    for (std::uint32_t u : s.vertices)
+      for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+      {
+        const TrianglesAround::Corner& c = around_.corner[k];
+        if (s.in_patch[c.others[0]] != stamp || s.in_patch[c.others[1]] != stamp)
+          continue;
+        ++corners;
+        boundary += c.across == u || s.in_patch[c.across] != stamp;
+      }
+    const long faces = corners / 3, chi = long (s.vertices.size ()) - (3 * faces + boundary) / 2 + faces;
+    if (chi >= 1)
+      return HandleKind::none; // a disc (or a whole small sphere)
+    // The boundary edges, triangle by triangle.
     s.edges.clear ();
     s.edge_triangle.clear ();
     for (std::uint32_t u : s.vertices)
@@ -261,21 +254,16 @@ public:
         if (u != std::min ({t[0], t[1], t[2]}) || s.in_patch[t[0]] != stamp || s.in_patch[t[1]] != stamp ||
             s.in_patch[t[2]] != stamp)
           continue;
-        ++faces;
         for (int i = 0; i < 3; ++i)
         {
-          const std::uint32_t d = opposite (c.triangle (), i);
+          const std::uint32_t d = around_.oppositeOfEdge (t[i], t[(i + 1) % 3]);
           if (d == t[i] || s.in_patch[d] != stamp)
           {
-            ++boundary;
             s.edges.push_back ({t[i], t[(i + 1) % 3]});
             s.edge_triangle.push_back (c.triangle ());
           }
         }
       }
-    const long chi = long (s.vertices.size ()) - (3 * faces + boundary) / 2 + faces;
-    if (chi >= 1)
-      return HandleKind::none; // a disc (or a whole small sphere)
     // Its boundary loops.
     s.loop_of.clear ();
     for (const Edge& e : s.edges)
@@ -467,12 +455,6 @@ public:
   }
 
 private:
-  /** oppositeVertex (t, i), matched all at once or looked up now. */
-  std::uint32_t opposite (std::uint32_t t, int i) const
-  {
-    return opposite_.empty () ? oppositeVertex (triangles_, around_, t, i) : opposite_[t][i];
-  }
-
   template <class F>
   void forNeighbours (std::uint32_t u, const F& f) const
   {
@@ -579,7 +561,6 @@ private:
 
   const std::vector<Triangle>& triangles_;
   const TrianglesAround around_;
-  const std::vector<std::array<std::uint32_t, 3>> opposite_;
   const std::uint32_t n_;
   const int rings_; ///< how many rings of triangles around a vertex make its patch
 };
@@ -668,9 +649,7 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
   }
   if (!on_handles && saddles.empty ())
     return out;
-  // A search of a whole part finds the edges' opposite vertices first; one at its sharp saddles
-  // alone, or near given vertices, as its patches need them.
-  const HandleFinder finder (triangles, num_vertices, on_handles && !wide && !near, rings);
+  const HandleFinder finder (triangles, num_vertices, rings);
   if (on_handles)
   {
     // Where the surface touches itself at a vertex (a pinch the mending left, split after the
