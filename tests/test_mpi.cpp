@@ -84,8 +84,9 @@ runMpi (int ranks, const std::string& arguments, const fs::path& log)
   // mpirun refuses root unless told; the containers the tests run in often are root.
   ::setenv ("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   ::setenv ("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  // Each test process has an Open MPI session directory of its own: the default, one per user and
-  // host, is removed by the first mpirun to end, while another test process's (ctest -j) uses it.
+  // Each test process has an Open MPI session directory of its own. The default one is shared by
+  // every mpirun of a user on a host, and each mpirun removes it when it ends, under any other
+  // mpirun that ctest -j runs beside it.
   ::setenv ("OMPI_MCA_orte_tmpdir_base", scratch ().c_str (), 1);
   const std::string command = std::string (PCL_WRAP_MPIRUN) + " --oversubscribe -np " + std::to_string (ranks) + " " +
                               PCL_WRAP_MPI_CLI + " " + arguments + " > " + log.string () + " 2>&1";

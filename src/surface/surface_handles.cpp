@@ -71,12 +71,7 @@ struct TrianglesAround
           begin,
           [] (std::size_t v, auto first, auto last) {
             for (auto c = first; c != last; ++c)
-            {
-              c->across = static_cast<std::uint32_t> (v);
-              for (auto d = first; d != last; ++d)
-                if (d->previous () == c->next ())
-                  c->across = d->next ();
-            }
+              c->across = acrossEdge (first, last, static_cast<std::uint32_t> (v), c->next ());
           }))
   {}
 
@@ -84,14 +79,22 @@ struct TrianglesAround
     * where none has it. */
   std::uint32_t oppositeOfEdge (std::uint32_t a, std::uint32_t b) const
   {
-    std::uint32_t found = a;
-    for (std::size_t k = begin[a]; k < begin[a + 1]; ++k)
-      if (corner[k].previous () == b)
-        found = corner[k].next ();
-    return found;
+    return acrossEdge (corner.begin () + begin[a], corner.begin () + begin[a + 1], a, b);
   }
 
 private:
+  /** Of the corners [first, last) around \a a, the next() of the last whose previous() is \a b;
+    * \a a where none is. */
+  template <class It>
+  static std::uint32_t acrossEdge (It first, It last, std::uint32_t a, std::uint32_t b)
+  {
+    std::uint32_t found = a;
+    for (; first != last; ++first)
+      if (first->previous () == b)
+        found = first->next ();
+    return found;
+  }
+
   static std::size_t checkedCount (std::size_t triangles)
   {
     if (triangles > ~AT_MASK)
