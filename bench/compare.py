@@ -197,6 +197,9 @@ def report(rows, args, machine):
              "pcl_wrap against the triangulation floor and the peers a user would pick instead, on the same",
              "points in one run, each method in a process of its own (time from points in memory to mesh in",
              "memory, normals included where a method needs them; peak resident memory of that process).",
+             "This file is assembled by `bench/compare.py` from its measurements (`bench/results.json`) and the",
+             "sections in `bench/*.md`, which other scripts write and readings are added to:",
+             "`bench/compare.py --report-only` rewrites it from them, and a test checks that it is what they make.",
              "", f"Machine: {machine}. Reproduce: `scripts/build.sh && scripts/fetch-data.sh && bench/compare.py "
              f"--sizes {','.join(map(str, args.sizes))}" + (f" --large {','.join(map(str, args.large))}" if args.large else "")
              + (f" --large-shapes {','.join(args.large_shapes)}" if args.large and args.large_shapes != SHAPES else "")
@@ -300,10 +303,8 @@ def stages(by_dataset):
     return lines + [""]
 
 
-def plot(rows, directory):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def plot(rows, directory, draw=True):
+    """The paths of the time plots, drawn unless not \a draw."""
     paths = []
     for shape in ("sphere", "torus", "cube"):
         series = {}
@@ -312,6 +313,13 @@ def plot(rows, directory):
                 series.setdefault(r["method"], []).append((r["points"], r["seconds"]))
         if not series:
             continue
+        path = os.path.join(directory, f"time_{shape}.png")
+        paths.append(path)
+        if not draw:
+            continue
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(7, 4.5))
         for method, pts in series.items():
             pts.sort()
@@ -325,11 +333,9 @@ def plot(rows, directory):
         ax.set_title(f"{shape}: time against number of points")
         ax.legend(fontsize=7)
         ax.grid(True, which="both", alpha=0.3)
-        path = os.path.join(directory, f"time_{shape}.png")
         fig.tight_layout()
         fig.savefig(path, dpi=110)
         plt.close(fig)
-        paths.append(path)
     return paths
 
 
@@ -347,6 +353,8 @@ def main():
     parser.add_argument("--smoke", action="store_true", help="a 500-point sphere, every method: checks the harness")
     parser.add_argument("--out", default=os.path.join(ROOT, "BENCHMARK.md"))
     parser.add_argument("--report-only", action="store_true", help="rewrite the report from bench/results.json")
+    parser.add_argument("--check", action="store_true",
+                        help="fail unless the report is what --report-only writes (no file written)")
     parser.add_argument("--small-runs", type=int, default=3, help="runs per method on small inputs, the fastest kept")
     parser.add_argument("--small-up-to", type=int, default=20000, help="the largest input that counts as small")
     parser.add_argument("--warm-memory", action="store_true",
@@ -363,7 +371,7 @@ def main():
         parser.error(f"--large-peers: unknown methods {unknown}; known: {', '.join(LABEL)}")
     # results.json keeps the machine the rows were measured on: a report rewritten elsewhere
     # (--report-only) names that one, not its own.
-    if args.report_only:
+    if args.report_only or args.check:
         with open(os.path.join(HERE, "results.json")) as f:
             saved = json.load(f)
         rows, machine = (saved, "not recorded") if isinstance(saved, list) else (saved["rows"], saved["machine"])
@@ -376,29 +384,43 @@ def main():
             sys.exit(f"compare.py --smoke: {bad}")
         print("compare.py --smoke: every method ran and was measured")
         return
-    if not args.report_only:
+    if not args.report_only and not args.check:
         with open(os.path.join(HERE, "results.json"), "w") as f:
             json.dump({"machine": machine, "warm_memory": args.warm_memory, "rows": rows}, f, indent=1)
-    plots = plot(rows, os.path.join(ROOT, "bench", "plots"))
+    plots = plot(rows, os.path.join(ROOT, "bench", "plots"), draw=not args.check)
     lines = report(rows, args, machine)
     # Sections other scripts write: bench/surface_quality.sh's table with its reading, bench/race.py's
     # time against quality, bench/scaling.py's time and memory per point (closed shapes and single
-    # layers), bench/single_layers.py's table.
+    # layers), bench/single_layers.py's table. A written reading of a generated section NAME.md sits
+    # in NAME.reading.md, so that rerunning the script keeps it.
     for section in ("surface_quality.md", "race.md"):
         path = os.path.join(HERE, section)
         if os.path.exists(path):
             at = lines.index("## Against the floor")
             lines[at:at] = open(path).read().rstrip().split("\n") + [""]
     lines += ["## Time against number of points", ""] + [f"![]({os.path.relpath(p, os.path.dirname(args.out))})" for p in plots]
-    for section in ("scaling.md", "scaling_single_layers.md", "single_layers.md"):
+    for section in ("scaling", "scaling_single_layers", "single_layers"):
+        for path in (os.path.join(HERE, section + ".md"), os.path.join(HERE, section + ".reading.md")):
+            if os.path.exists(path):
+                lines += [""] + open(path).read().rstrip().split("\n")
+    # Measured by hand: perf and stage timings; bench/mpi_scaling.py's runs with their reading.
+    for section in ("where_the_time_goes.md", "mpi_scaling.md"):
         path = os.path.join(HERE, section)
         if os.path.exists(path):
-            lines += [""] + open(path).read().rstrip().split("\n")
-    profile = os.path.join(HERE, "where_the_time_goes.md")  # measured by hand: perf, stage timings
-    if os.path.exists(profile):
-        lines += ["", open(profile).read().rstrip()]
+            lines += ["", open(path).read().rstrip()]
+    text = "\n".join(lines) + "\n"
+    if args.check:
+        with open(args.out) as f:
+            written = f.read()
+        if written != text:
+            have, want = written.split("\n"), text.split("\n")
+            line = next((i + 1 for i, (a, b) in enumerate(zip(have, want)) if a != b), min(len(have), len(want)) + 1)
+            sys.exit(f"{args.out} differs from what bench/compare.py --report-only writes from bench/results.json and "
+                     f"the sections in bench/, from line {line}: edit the section in bench/, then rerun --report-only")
+        print(f"compare.py --check: {args.out} is what the sections in bench/ make")
+        return
     with open(args.out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write(text)
     print(f"wrote {args.out}")
 
 
