@@ -27,6 +27,7 @@
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_lock_grid_3.h>
 
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <algorithm>
@@ -131,7 +132,12 @@ main (int argc, char** argv)
   std::vector<Point3> points;
   try
   {
+    // A point file is parsed on all threads. A child forked while TBB's worker threads live has
+    // none of them yet believes it has: its parallel stages would run on one thread (twice as slow
+    // on two cores). So the workers are ended before the first fork.
+    tbb::task_scheduler_handle workers{tbb::attach{}};
     points = pcl_wrap::bench::makePoints (shape, n, seed);
+    tbb::finalize (workers);
   }
   catch (const std::exception& e) // an unreadable or malformed file
   {
