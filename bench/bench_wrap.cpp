@@ -21,13 +21,13 @@
 #include "bench_points.h"
 
 #include <pcl_wrap/compute_wrap.h>
+#include <pcl_wrap/worker_threads.h>
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Spatial_lock_grid_3.h>
 
-#include <tbb/global_control.h>
 #include <tbb/info.h>
 
 #include <algorithm>
@@ -132,16 +132,17 @@ main (int argc, char** argv)
   std::vector<Point3> points;
   try
   {
-    // A point file is parsed on all threads. A child forked while TBB's worker threads live has
-    // none of them yet believes it has: its parallel stages would run on one thread (twice as slow
-    // on two cores). So the workers are ended before the first fork.
-    tbb::task_scheduler_handle workers{tbb::attach{}};
     points = pcl_wrap::bench::makePoints (shape, n, seed);
-    tbb::finalize (workers);
   }
   catch (const std::exception& e) // an unreadable or malformed file
   {
     std::cerr << "bench_wrap: " << e.what () << "\n";
+    return 1;
+  }
+  // A point file is parsed on all threads, whose workers a forked measurement would not have.
+  if (!pcl_wrap::endWorkerThreads ())
+  {
+    std::cerr << "bench_wrap: the worker threads did not end before the measurements\n";
     return 1;
   }
   // What the process holds before any measurement (the points, the program): subtracted from

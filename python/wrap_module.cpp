@@ -7,6 +7,7 @@
 #include <pcl_wrap/compute_wrap.h>
 #include <pcl_wrap/statistics_json.h>
 #include <pcl_wrap/version.h>
+#include <pcl_wrap/worker_threads.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -161,6 +162,12 @@ PYBIND11_MODULE (_core, m)
 {
   m.doc () = "pcl_wrap's engine; use the functions of the pcl_wrap package";
   m.attr ("__version__") = PCL_WRAP_VERSION;
+  // A child forked while the worker threads live would compute on one thread: they are ended
+  // before each fork (multiprocessing's default way to start a process on Linux).
+  py::module_::import ("os").attr ("register_at_fork") (py::arg ("before") = py::cpp_function ([] {
+                                                          py::gil_scoped_release release;
+                                                          endWorkerThreads ();
+                                                        }));
 
   py::class_<Threshold> threshold (m, "Threshold",
                                    "Which sinks the construction deletes to wrap tighter (none by default).");

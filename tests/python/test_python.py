@@ -306,6 +306,27 @@ class Interpreter(unittest.TestCase):
         self.assertGreater(max(inside) - min(inside), 0.8 * length)
 
 
+    def test_a_forked_child_computes_on_more_than_one_thread(self):
+        if (os.cpu_count() or 1) < 2:
+            self.skipTest("one core: no worker threads")
+        points = sphere(20000)
+        pcl_wrap.wrap(points)  # the worker threads start in this process
+        read, write = os.pipe()
+        child = os.fork()
+        if child == 0:
+            try:
+                pcl_wrap.wrap(points, output="raw")
+                os.write(write, str(len(os.listdir("/proc/self/task"))).encode())
+            finally:
+                os._exit(0)
+        os.close(write)
+        with os.fdopen(read) as answer:
+            threads = int(answer.read() or "0")
+        os.waitpid(child, 0)
+        # Forked while the workers lived, the child would have inherited none, believed it had
+        # them, and kept its one thread.
+        self.assertGreater(threads, 1)
+
     def test_ctrl_c_ends_the_computation_between_stages(self):
         script = ("import numpy as np, pcl_wrap, sys\n"
                   "p = np.random.default_rng(1).uniform(-1, 1, size=(1000000, 3))\n"
