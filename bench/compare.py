@@ -304,7 +304,7 @@ def stages(by_dataset):
 
 
 def plot(rows, directory, draw=True):
-    """The paths of the time plots, drawn unless not \a draw."""
+    """The paths of the time plots, which are drawn unless draw is false."""
     paths = []
     for shape in ("sphere", "torus", "cube"):
         series = {}

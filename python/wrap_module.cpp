@@ -156,18 +156,22 @@ kindName (const Threshold& t)
   }
 }
 
+/** A child forked while the worker threads live would compute on one thread: they are ended
+  * before each fork (multiprocessing's default way to start a process on Linux). */
+void
+endWorkersBeforeFork ()
+{
+  py::gil_scoped_release release;
+  endWorkerThreads ();
+}
+
 } // namespace
 
 PYBIND11_MODULE (_core, m)
 {
   m.doc () = "pcl_wrap's engine; use the functions of the pcl_wrap package";
   m.attr ("__version__") = PCL_WRAP_VERSION;
-  // A child forked while the worker threads live would compute on one thread: they are ended
-  // before each fork (multiprocessing's default way to start a process on Linux).
-  py::module_::import ("os").attr ("register_at_fork") (py::arg ("before") = py::cpp_function ([] {
-                                                          py::gil_scoped_release release;
-                                                          endWorkerThreads ();
-                                                        }));
+  py::module_::import ("os").attr ("register_at_fork") (py::arg ("before") = py::cpp_function (&endWorkersBeforeFork));
 
   py::class_<Threshold> threshold (m, "Threshold",
                                    "Which sinks the construction deletes to wrap tighter (none by default).");
