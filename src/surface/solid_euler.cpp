@@ -27,20 +27,51 @@ SolidEulerChange::SolidEulerChange (const Tetrahedra& tetrahedra, const std::vec
         ++inside_at_vertex_[tetrahedra_.vertex (t, i)];
 }
 
+void
+SolidEulerChange::DistinctFaces::clear (std::size_t faces)
+{
+  for (std::uint32_t at : used_)
+    keys_[at] = EMPTY;
+  used_.clear ();
+  seen_.clear ();
+  std::size_t size = 64;
+  while (size < 2 * faces)
+    size *= 2;
+  if (size > keys_.size ())
+  {
+    keys_.assign (size, EMPTY);
+    slot_.resize (size);
+  }
+}
+
+void
+SolidEulerChange::DistinctFaces::add (std::uint64_t key, std::uint32_t tetrahedron, int a, int b)
+{
+  const std::size_t mask = keys_.size () - 1;
+  std::size_t at = static_cast<std::size_t> ((key * 0x9E3779B97F4A7C15u) >> 40) & mask;
+  for (; keys_[at] != EMPTY; at = (at + 1) & mask)
+    if (keys_[at] == key)
+    {
+      ++seen_[slot_[at]].uses;
+      return;
+    }
+  keys_[at] = key;
+  slot_[at] = static_cast<std::uint32_t> (seen_.size ());
+  used_.push_back (static_cast<std::uint32_t> (at));
+  seen_.push_back ({tetrahedron, a, b, 1});
+}
+
 bool
-SolidEulerChange::onOtherInside (const Face& face, const std::vector<std::uint32_t>& moved) const
+SolidEulerChange::edgeOnOtherInside (const DistinctFaces::Seen& edge, const std::vector<std::uint32_t>& moved) const
 {
   const auto counts = [&] (std::uint32_t t) { return t != OUTSIDE_HULL && inside_[t] && !isMoved (moved, t); };
-  if (face.dim == 0) // the inside tetrahedra at the vertex, less the moved ones among them
-    return inside_at_vertex_[tetrahedra_.vertex (face.tetrahedron, face.a)] >
-           (inside_[face.tetrahedron] ? face.uses : 0u);
-  // An edge: walk its ring of tetrahedra, one way round, and the other way when the hull stops it.
-  const std::uint32_t start = face.tetrahedron;
+  // Walk the edge's ring of tetrahedra, one way round, and the other way when the hull stops it.
+  const std::uint32_t start = edge.tetrahedron;
   if (counts (start))
     return true;
-  const std::uint32_t a = tetrahedra_.vertex (start, face.a), b = tetrahedra_.vertex (start, face.b);
+  const std::uint32_t a = tetrahedra_.vertex (start, edge.a), b = tetrahedra_.vertex (start, edge.b);
   int first = 0;
-  while (first == face.a || first == face.b)
+  while (first == edge.a || first == edge.b)
     ++first;
   for (int leave : {first, tetrahedra_.otherFacetRoundEdge (start, first, a, b)})
     for (std::uint32_t t = start;;)
@@ -74,39 +105,52 @@ SolidEulerChange::operator() (const std::vector<std::uint32_t>& moved, Scratch& 
   if (moved.empty ())
     return 0;
   std::vector<std::uint32_t>& sorted = scratch.moved;
-  std::vector<Face>& faces = scratch.faces;
   sorted.assign (moved.begin (), moved.end ());
   std::sort (sorted.begin (), sorted.end ());
-  const SimplicialComplex& complex = tetrahedra_.complex ();
-  faces.clear ();
-  for (std::uint32_t t : sorted)
-  {
-    for (int a = 0; a < 4; ++a)
-    {
-      faces.push_back ({0, tetrahedra_.vertex (t, a), t, a, a, false, 1});
-      const std::uint32_t u = tetrahedra_.neighbour (t, a);
-      const bool across_inside = u != OUTSIDE_HULL && inside_[u] && !isMoved (sorted, u);
-      faces.push_back ({2, complex.facet (3, t, a).id, t, a, a, across_inside, 1});
-      for (int b = a + 1; b < 4; ++b)
-        faces.push_back ({1, complex.face (3, t, (1u << a) | (1u << b)).id, t, a, b, false, 1});
-    }
-  }
-  std::sort (faces.begin (), faces.end ());
+  const bool moved_inside = inside_[sorted.front ()] != 0;
+  // chi (P) and chi (K), face by face: K's vertices, edges and triangles are those with an inside
+  // coface not in P.
   int chi_moved = -static_cast<int> (sorted.size ()), chi_k = 0;
-  for (std::size_t i = 0; i < faces.size ();)
+  // Triangles: a triangle of two moved tetrahedra is counted at the lower, and is not in K; any
+  // other is in K when the tetrahedron across it is inside.
+  for (std::uint32_t t : sorted)
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t u = tetrahedra_.neighbour (t, i);
+      if (u != OUTSIDE_HULL && isMoved (sorted, u))
+        chi_moved += t < u;
+      else
+      {
+        ++chi_moved;
+        chi_k += u != OUTSIDE_HULL && inside_[u];
+      }
+    }
+  // Vertices: in K when more inside tetrahedra have the vertex than the moved ones that are.
+  DistinctFaces& faces = scratch.faces;
+  faces.clear (4 * sorted.size ());
+  for (std::uint32_t t : sorted)
+    for (int a = 0; a < 4; ++a)
+      faces.add (tetrahedra_.vertex (t, a), t, a, a);
+  for (const DistinctFaces::Seen& v : faces.seen ())
   {
-    std::size_t j = i;
-    bool in_k = false;
-    for (; j < faces.size () && faces[j].dim == faces[i].dim && faces[j].id == faces[i].id; ++j)
-      in_k = in_k || faces[j].in_k;
-    faces[i].uses = static_cast<std::uint32_t> (j - i);
-    const int sign = faces[i].dim == 1 ? -1 : 1;
-    chi_moved += sign;
-    if (faces[i].dim == 2 ? in_k : onOtherInside (faces[i], sorted))
-      chi_k += sign;
-    i = j;
+    ++chi_moved;
+    chi_k += inside_at_vertex_[tetrahedra_.vertex (v.tetrahedron, v.a)] > (moved_inside ? v.uses : 0u);
   }
-  return inside_[sorted.front ()] ? chi_k - chi_moved : chi_moved - chi_k;
+  // Edges: in K when an inside tetrahedron not moved is in the edge's ring.
+  faces.clear (6 * sorted.size ());
+  for (std::uint32_t t : sorted)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+      {
+        const std::uint64_t u = tetrahedra_.vertex (t, a), w = tetrahedra_.vertex (t, b);
+        faces.add (std::min (u, w) << 32 | std::max (u, w), t, a, b);
+      }
+  for (const DistinctFaces::Seen& e : faces.seen ())
+  {
+    --chi_moved;
+    chi_k -= edgeOnOtherInside (e, sorted);
+  }
+  return moved_inside ? chi_k - chi_moved : chi_moved - chi_k;
 }
 
 } // namespace pcl_wrap::detail

@@ -4,6 +4,7 @@
 
 #include "delaunay/tetrahedra.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,24 +22,39 @@ namespace pcl_wrap::detail
   * changedSide(). */
 class SolidEulerChange
 {
-  /** A face of a moved tetrahedron: dimension, id, where it was seen, and whether it is in K. */
-  struct Face
+public:
+  /** \brief The distinct vertices or edges of a move's tetrahedra, each with where it was first
+    * seen and how many of the tetrahedra have it: a small open-addressing table, emptied in the
+    * time it was filled, so that weighing a move allocates nothing once warm. */
+  class DistinctFaces
   {
-    int dim;
-    std::uint32_t id;
-    std::uint32_t tetrahedron;
-    int a, b; // local vertices of the tetrahedron: the vertex (a), the edge (a, b)
-    bool in_k;
-    std::uint32_t uses; // how many moved tetrahedra have it, once sorted
-    bool operator<(const Face& o) const { return dim != o.dim ? dim < o.dim : id < o.id; }
+  public:
+    struct Seen
+    {
+      std::uint32_t tetrahedron;
+      int a, b;           ///< local vertices of the tetrahedron: the vertex (a), the edge (a, b)
+      std::uint32_t uses; ///< how many of the tetrahedra have it
+    };
+    /** Empties the table, sized for up to \a faces distinct keys. */
+    void clear (std::size_t faces);
+    /** One more use of the face \a key (a vertex id, or an edge's two ids, the lower in the high
+      * half), seen in \a tetrahedron at its local vertices \a a, \a b. */
+    void add (std::uint64_t key, std::uint32_t tetrahedron, int a, int b);
+    const std::vector<Seen>& seen () const { return seen_; }
+
+  private:
+    static constexpr std::uint64_t EMPTY = ~std::uint64_t (0);
+    std::vector<std::uint64_t> keys_;
+    std::vector<std::uint32_t> slot_; // per place in keys_: the face's index in seen_
+    std::vector<std::uint32_t> used_; // the places filled
+    std::vector<Seen> seen_;
   };
 
-public:
   /** \brief What one thread needs to weigh a move: reused from move to move. */
   struct Scratch
   {
     std::vector<std::uint32_t> moved; // sorted
-    std::vector<Face> faces;
+    DistinctFaces faces;
   };
 
   /** Counts the inside tetrahedra at each vertex. */
@@ -54,8 +70,8 @@ public:
   void changedSide (std::uint32_t t);
 
 private:
-  /** Is some inside tetrahedron that is not in \a moved a coface of \a face? */
-  bool onOtherInside (const Face& face, const std::vector<std::uint32_t>& moved) const;
+  /** Is some inside tetrahedron that is not in \a moved (sorted) a coface of \a edge? */
+  bool edgeOnOtherInside (const DistinctFaces::Seen& edge, const std::vector<std::uint32_t>& moved) const;
 
   const Tetrahedra& tetrahedra_;
   const std::vector<std::uint8_t>& inside_;
