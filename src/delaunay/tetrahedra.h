@@ -120,6 +120,33 @@ public:
       ++out;
     return out;
   }
+  /** \brief Does \a pred hold for some tetrahedron around the edge of \a t between its local
+    * vertices \a a and \a b (t among them)? The ring is walked from t one way round, and the
+    * other way when the hull stops it. */
+  template <class Pred>
+  bool anyRoundEdge (std::uint32_t t, int a, int b, const Pred& pred) const
+  {
+    if (pred (t))
+      return true;
+    const std::uint32_t v = vertex (t, a), w = vertex (t, b);
+    int first = 0;
+    while (first == a || first == b)
+      ++first;
+    for (int leave : {first, otherFacetRoundEdge (t, first, v, w)})
+      for (std::uint32_t at = t;;)
+      {
+        const std::uint32_t u = neighbour (at, leave);
+        if (u == OUTSIDE_HULL)
+          break;
+        if (u == t)
+          return false;
+        if (pred (u))
+          return true;
+        leave = otherFacetRoundEdge (u, mirrorIndex (at, leave), v, w);
+        at = u;
+      }
+    return false;
+  }
   /** \brief The highest-numbered tetrahedron of \a v, or NO_TETRAHEDRON for a vertex of none. */
   std::uint32_t tetrahedronOf (std::uint32_t v) const { return tetrahedron_of_vertex_[v]; }
   /** \brief \a star := the tetrahedra that contain \a v, breadth first from tetrahedronOf (v)

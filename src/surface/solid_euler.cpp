@@ -64,29 +64,8 @@ SolidEulerChange::DistinctFaces::add (std::uint64_t key, std::uint32_t tetrahedr
 bool
 SolidEulerChange::edgeOnOtherInside (const DistinctFaces::Seen& edge, const std::vector<std::uint32_t>& moved) const
 {
-  const auto counts = [&] (std::uint32_t t) { return t != OUTSIDE_HULL && inside_[t] && !isMoved (moved, t); };
-  // Walk the edge's ring of tetrahedra, one way round, and the other way when the hull stops it.
-  const std::uint32_t start = edge.tetrahedron;
-  if (counts (start))
-    return true;
-  const std::uint32_t a = tetrahedra_.vertex (start, edge.a), b = tetrahedra_.vertex (start, edge.b);
-  int first = 0;
-  while (first == edge.a || first == edge.b)
-    ++first;
-  for (int leave : {first, tetrahedra_.otherFacetRoundEdge (start, first, a, b)})
-    for (std::uint32_t t = start;;)
-    {
-      const std::uint32_t u = tetrahedra_.neighbour (t, leave);
-      if (u == OUTSIDE_HULL)
-        break;
-      if (u == start)
-        return false;
-      if (counts (u))
-        return true;
-      leave = tetrahedra_.otherFacetRoundEdge (u, tetrahedra_.mirrorIndex (t, leave), a, b);
-      t = u;
-    }
-  return false;
+  return tetrahedra_.anyRoundEdge (edge.tetrahedron, edge.a, edge.b,
+                                   [&] (std::uint32_t t) { return inside_[t] && !isMoved (moved, t); });
 }
 
 void

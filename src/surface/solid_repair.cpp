@@ -554,23 +554,28 @@ private:
   bool seversResolvedGapsOnly (const std::vector<std::uint32_t>& move, Star& star, double gap = UNRESOLVED_GAP)
   {
     const auto moving = [&] (std::uint32_t t) { return std::binary_search (move.begin (), move.end (), t); };
-    // Per vertex of the move: its neighbours along the edges the solid keeps.
+    const auto keeps = [&] (std::uint32_t t) { return inside (t) && !moving (t); };
     const std::vector<std::uint32_t> corners = tetrahedra_.verticesOf (move);
-    std::vector<std::vector<std::uint32_t>> kept (corners.size ()); // sorted
-    for (std::size_t k = 0; k < corners.size (); ++k)
-    {
+    const auto at = [&] (std::uint32_t v) {
+      return static_cast<std::size_t> (std::lower_bound (corners.begin (), corners.end (), v) - corners.begin ());
+    };
+    // Per vertex of the move, where an edge needs them: its neighbours along the edges the solid
+    // keeps (sorted), and the sample's spacing around it.
+    std::vector<std::vector<std::uint32_t>> kept (corners.size ());
+    std::vector<std::uint8_t> kept_known (corners.size (), 0);
+    const auto keptOf = [&] (std::size_t k) -> const std::vector<std::uint32_t>& {
+      if (kept_known[k])
+        return kept[k];
+      kept_known[k] = 1;
       tetrahedra_.gatherStar (corners[k], star);
       for (std::uint32_t t : star.tetrahedra ())
-        if (inside (t) && !moving (t))
+        if (keeps (t))
           for (int i = 0; i < 4; ++i)
             kept[k].push_back (tetrahedra_.vertex (t, i));
       std::sort (kept[k].begin (), kept[k].end ());
       kept[k].erase (std::unique (kept[k].begin (), kept[k].end ()), kept[k].end ());
-    }
-    const auto at = [&] (std::uint32_t v) {
-      return static_cast<std::size_t> (std::lower_bound (corners.begin (), corners.end (), v) - corners.begin ());
+      return kept[k];
     };
-    // Per vertex of the move: the sample's spacing around it, where an edge needs it.
     std::vector<double> spacing (corners.size (), std::numeric_limits<double>::quiet_NaN ());
     const auto spacingOf = [&] (std::size_t k) {
       if (std::isnan (spacing[k]))
@@ -582,13 +587,14 @@ private:
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
         {
-          const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
-          if (std::binary_search (kept[a].begin (), kept[a].end (), corners[b]))
+          if (tetrahedra_.anyRoundEdge (t, i, j, keeps))
             continue; // kept
+          const std::size_t a = at (tetrahedra_.vertex (t, i)), b = at (tetrahedra_.vertex (t, j));
           if (resolvedGap (positions_[corners[a]], positions_[corners[b]], spacingOf (a), spacingOf (b), gap))
             continue; // a gap the sampling resolves
           common.clear ();
-          std::set_intersection (kept[a].begin (), kept[a].end (), kept[b].begin (), kept[b].end (),
+          const std::vector<std::uint32_t>&kept_a = keptOf (a), &kept_b = keptOf (b);
+          std::set_intersection (kept_a.begin (), kept_a.end (), kept_b.begin (), kept_b.end (),
                                  std::back_inserter (common));
           if (common.empty ())
             return false;
