@@ -21,6 +21,7 @@
 #include <limits>
 #include <optional>
 #include <queue>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -250,7 +251,11 @@ private:
     bool neck = false;
     bool operator<(const HandleCut& o) const
     {
-      return weight != o.weight ? weight < o.weight : tetrahedra < o.tetrahedra;
+      return std::tie (weight, tetrahedra, web, neck) < std::tie (o.weight, o.tetrahedra, o.web, o.neck);
+    }
+    bool operator== (const HandleCut& o) const
+    {
+      return std::tie (weight, tetrahedra, web, neck) == std::tie (o.weight, o.tetrahedra, o.web, o.neck);
     }
   };
 
@@ -354,11 +359,7 @@ private:
     for (auto& [scratch, list] : found)
       std::move (list.begin (), list.end (), std::back_inserter (all));
     std::sort (all.begin (), all.end ());
-    all.erase (std::unique (all.begin (), all.end (),
-                            [] (const HandleCut& a, const HandleCut& b) {
-                              return a.tetrahedra == b.tetrahedra && a.web == b.web && a.neck == b.neck;
-                            }),
-               all.end ());
+    all.erase (std::unique (all.begin (), all.end ()), all.end ());
     return all;
   }
 
@@ -391,11 +392,7 @@ private:
                      last = patches.vertices.begin () + patches.begin[i + 1];
           const std::vector<std::uint32_t> within = tetrahedraWithin (first, last, scratch.star);
           const auto add = [&] (std::vector<std::uint32_t>& part, bool web) {
-            HandleCut plug{0.0, std::move (part), web, patches.neck[i] != 0};
-            for (std::uint32_t t : plug.tetrahedra)
-              plug.weight += labels_.margin[t];
-            if (euler_change (plug.tetrahedra, scratch.euler) >= 1)
-              plugs.push_back (std::move (plug));
+            plugs.push_back ({0.0, std::move (part), web, patches.neck[i] != 0});
           };
           if (!patches.neck[i]) // a neck's webs only
             for (std::vector<std::uint32_t>& part : partsOnOneSide (within, scratch.parts))
@@ -462,7 +459,22 @@ private:
             }
         },
         4);
-    return gathered (found);
+    // The patches overlap, and so do their plugs: each is weighed once.
+    std::vector<HandleCut> plugs = gathered (found);
+    std::vector<std::uint8_t> raises (plugs.size ());
+    tbb::enumerable_thread_specific<SolidEulerChange::Scratch> scratches;
+    parallelForEach (plugs.size (), [&] (std::size_t k) {
+      HandleCut& plug = plugs[k];
+      for (std::uint32_t t : plug.tetrahedra)
+        plug.weight += labels_.margin[t];
+      raises[k] = euler_change (plug.tetrahedra, scratches.local ()) >= 1;
+    });
+    std::vector<HandleCut> kept;
+    for (std::size_t k = 0; k < plugs.size (); ++k)
+      if (raises[k])
+        kept.push_back (std::move (plugs[k]));
+    std::sort (kept.begin (), kept.end ());
+    return kept;
   }
 
   /** Per vertex of \a patches.vertices: the sample's spacing around it (spacingAround()) in the
