@@ -695,7 +695,9 @@ private:
     // One search from each seed that no earlier search reached. What is left of the side is
     // connected when one search reached all of it (and the hull, if the part touched it), or
     // when every search reached the hull, beyond which the outside is one. For the solid, that
-    // is all the first search has to find: it stops once it has reached every seed.
+    // is all the first search has to find: it stops once it has reached every seed, and where it
+    // has not, and no split is allowed, the move is refused then. For the outside, a search
+    // stops once it has reached the hull.
     std::size_t searches = 0, to_hull = 0, small = 0;
     std::vector<std::uint32_t> move = part, queue, distinct_seeds;
     if (side)
@@ -709,6 +711,8 @@ private:
     {
       if (reached[seed] == search)
         continue;
+      if (side && searches == 1 && splits == Split::no)
+        return {}; // the solid left is not connected
       queue.assign (1, seed);
       reached[seed] = search;
       const bool first = searches == 0;
