@@ -625,7 +625,7 @@ private:
     const std::uint8_t side = inside (part.front ());
     for (int grown = 0; grown <= 2; ++grown)
     {
-      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, ++search, splits);
+      std::vector<std::uint32_t> move = moveKeepingSidesConnected (part, reached, search, splits);
       if (move.empty () || (*euler_change_) (move, s.euler) != 1)
         return {};
       for (std::uint32_t t : move)
@@ -673,10 +673,10 @@ private:
     * connected or in large parts), or none ends in a part of fewer than FRAGMENT_VERTICES points;
     * empty if not. A move into the solid may enclose small pockets
     * of the outside (a search from them ends within the reach, short of the hull): they move with
-    * it, as fillUnsampledVoids() would fill them. \a reached: per tetrahedron, the last \a search
-    * to reach it. */
+    * it, as fillUnsampledVoids() would fill them. \a reached: per tetrahedron, the last search
+    * to reach it; \a search: the last search's number, counted on by one per search. */
   std::vector<std::uint32_t> moveKeepingSidesConnected (const std::vector<std::uint32_t>& part,
-                                                        std::vector<std::uint32_t>& reached, std::uint32_t search,
+                                                        std::vector<std::uint32_t>& reached, std::uint32_t& search,
                                                         Split splits)
   {
     const bool side = inside (part.front ());
@@ -697,7 +697,9 @@ private:
     // when every search reached the hull, beyond which the outside is one. For the solid, that
     // is all the first search has to find: it stops once it has reached every seed, and where it
     // has not, and no split is allowed, the move is refused then. For the outside, a search
-    // stops once it has reached the hull.
+    // stops once it has reached the hull, or a tetrahedron an earlier search reached (which
+    // reached the hull: the move is refused at the first search of the outside that does not).
+    const std::uint32_t first_search = search + 1;
     std::size_t searches = 0, to_hull = 0, small = 0;
     std::vector<std::uint32_t> move = part, queue, distinct_seeds;
     if (side)
@@ -709,12 +711,13 @@ private:
     std::size_t seeds_left = distinct_seeds.size (); // of the solid, not reached by the first search
     for (std::uint32_t seed : seeds)
     {
-      if (reached[seed] == search)
+      if (reached[seed] >= first_search)
         continue;
       if (side && searches == 1 && splits == Split::no)
         return {}; // the solid left is not connected
+      const std::uint32_t mine = ++search;
       queue.assign (1, seed);
-      reached[seed] = search;
+      reached[seed] = mine;
       const bool first = searches == 0;
       seeds_left -= side && first;
       bool hull_reached = false;
@@ -724,16 +727,20 @@ private:
           const std::uint32_t u = tetrahedra_.neighbour (t, i);
           if (u == OUTSIDE_HULL)
             hull_reached = true;
-          else if (reached[u] != search && inside (u) == side && !inPart (u))
+          else if (reached[u] >= first_search && reached[u] != mine) // an earlier search's
+            hull_reached = hull_reached || !side;
+          else if (reached[u] != mine && inside (u) == side && !inPart (u))
           {
-            reached[u] = search;
+            reached[u] = mine;
             queue.push_back (u);
             seeds_left -= side && first && std::binary_search (distinct_seeds.begin (), distinct_seeds.end (), u);
           }
         }
       };
       std::size_t k = 0;
-      for (; k < queue.size () && queue.size () <= HANDLE_REACH && !(side && first && seeds_left == 0); ++k)
+      for (; k < queue.size () && queue.size () <= HANDLE_REACH && !(side && first && seeds_left == 0) &&
+             !(!side && hull_reached);
+           ++k)
         reach (queue[k]);
       if (!side && !hull_reached && k < queue.size ())
       {
@@ -755,6 +762,8 @@ private:
       }
       if (!side && !hull_reached && queue.size () <= HANDLE_REACH)
         move.insert (move.end (), queue.begin (), queue.end ()); // a pocket
+      else if (!side && !hull_reached)
+        return {}; // the outside left is not connected
       else
       {
         ++searches;
