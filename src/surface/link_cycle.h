@@ -72,6 +72,39 @@ linkShape (std::size_t k, const Edge& edge)
   return shape;
 }
 
+/** \brief Do the \a k edges edge(0), ..., edge(k - 1) make one short cycle, found by a walk round
+  * it from the first edge, on to the one other edge at each end it reaches? True says they make
+  * one cycle; false says only that the walk met something else (two cycles, an end on more than
+  * two edges, more than SHORT edges), which linkShape() then tells. Most links of a surface are
+  * one short cycle, and the walk says so without sorting. */
+template <class Edge>
+bool
+isOneShortCycle (std::size_t k, const Edge& edge)
+{
+  constexpr std::size_t SHORT = 16;
+  if (k < 3 || k > SHORT)
+    return false;
+  std::size_t at = 0;
+  std::uint32_t end = edge (0).second;
+  for (std::size_t steps = 1; steps <= k && edge (at).first != edge (at).second; ++steps)
+  {
+    std::size_t next = k, found = 0;
+    for (std::size_t f = 0; f < k; ++f)
+      if (f != at && (edge (f).first == end || edge (f).second == end))
+      {
+        next = f;
+        ++found;
+      }
+    if (found != 1)
+      return false;
+    if (next == 0)
+      return steps == k;
+    at = next;
+    end = edge (at).first == end ? edge (at).second : edge (at).first;
+  }
+  return false;
+}
+
 /** \brief Do the edges [first, last) (pairs of vertex ids) make one cycle, each vertex on it in
   * exactly two of them? A vertex of a closed 2-manifold has such a link. */
 template <class It>
@@ -81,36 +114,10 @@ isOneCycle (It first, It last)
   const auto k = static_cast<std::size_t> (last - first);
   if (k < 3)
     return false;
-  // Most links are one short cycle: a walk round it from the first edge, on to the one other edge
-  // at each end it reaches, says so without sorting. Where the walk meets anything else, the
-  // sorted ends decide.
-  constexpr std::size_t SHORT = 16;
-  if (k <= SHORT)
-  {
-    std::size_t edge = 0;
-    std::uint32_t end = first[0][1];
-    for (std::size_t steps = 1; steps <= k && first[edge][0] != first[edge][1]; ++steps)
-    {
-      std::size_t next = k, found = 0;
-      for (std::size_t f = 0; f < k; ++f)
-        if (f != edge && (first[f][0] == end || first[f][1] == end))
-        {
-          next = f;
-          ++found;
-        }
-      if (found != 1)
-        break;
-      if (next == 0)
-      {
-        if (steps == k)
-          return true;
-        break;
-      }
-      edge = next;
-      end = first[edge][0] == end ? first[edge][1] : first[edge][0];
-    }
-  }
-  const LinkShape shape = linkShape (k, [&] (std::size_t e) { return std::make_pair (first[e][0], first[e][1]); });
+  const auto edge = [&] (std::size_t e) { return std::make_pair (first[e][0], first[e][1]); };
+  if (isOneShortCycle (k, edge))
+    return true;
+  const LinkShape shape = linkShape (k, edge);
   return shape.cycles && shape.parts == 1;
 }
 

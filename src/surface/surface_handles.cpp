@@ -412,13 +412,12 @@ public:
     * surface is a 2-manifold, more where it touches itself there (a pinch). */
   std::uint32_t fansAround (std::uint32_t v) const
   {
-    const std::size_t first = around_.begin[v];
-    return linkShape (around_.begin[v + 1] - first,
-                      [&] (std::size_t k) {
-                        const TrianglesAround::Corner& c = around_.corner[first + k];
-                        return std::make_pair (c.next (), c.previous ());
-                      })
-        .parts;
+    const std::size_t first = around_.begin[v], k = around_.begin[v + 1] - first;
+    const auto edge = [&] (std::size_t e) {
+      const TrianglesAround::Corner& c = around_.corner[first + e];
+      return std::make_pair (c.next (), c.previous ());
+    };
+    return isOneShortCycle (k, edge) ? 1 : linkShape (k, edge).parts;
   }
 
   /** Clears the flags in \a look of the vertices more than \a rings rings from all of \a seeds. */
