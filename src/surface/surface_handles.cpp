@@ -222,7 +222,10 @@ public:
     s.vertices.assign (1, v);
     s.in_patch[v] = stamp;
     s.front.assign (1, v);
+    std::size_t inner = 0; // the vertices of the rings before the last, whose neighbours are all in it
     for (int ring = 0; ring < rings_; ++ring)
+    {
+      inner = s.vertices.size ();
       nextRing (s.front, s.next, [&] (std::uint32_t, std::uint32_t w) {
         if (s.in_patch[w] == stamp)
           return false;
@@ -230,12 +233,25 @@ public:
         s.vertices.push_back (w);
         return true;
       });
+    }
     // The patch's triangles (those with three vertices in it) and its boundary edges (on one of
     // them): V - E + F with E = (3 F + boundary) / 2. Each is counted at its corners, from what
     // lies around the corner's vertex alone: a triangle's edge at the corner it starts from.
     long corners = 0, boundary = 0;
-    for (std::uint32_t u : s.vertices)
-      for (std::size_t k = around_.begin[u]; k < around_.begin[u + 1]; ++k)
+    for (std::size_t i = 0; i < s.vertices.size (); ++i)
+    {
+      const std::uint32_t u = s.vertices[i];
+      const std::size_t first = around_.begin[u], last = around_.begin[u + 1];
+      if (i < inner)
+      {
+        // Every triangle around it is in the patch, and an edge from it is on the boundary only
+        // where no triangle is across.
+        corners += static_cast<long> (last - first);
+        for (std::size_t k = first; k < last; ++k)
+          boundary += around_.corner[k].across == u;
+        continue;
+      }
+      for (std::size_t k = first; k < last; ++k)
       {
         const TrianglesAround::Corner& c = around_.corner[k];
         if (s.in_patch[c.others[0]] != stamp || s.in_patch[c.others[1]] != stamp)
@@ -243,6 +259,7 @@ public:
         ++corners;
         boundary += c.across == u || s.in_patch[c.across] != stamp;
       }
+    }
     const long faces = corners / 3, chi = long (s.vertices.size ()) - (3 * faces + boundary) / 2 + faces;
     if (chi >= 1)
       return HandleKind::none; // a disc (or a whole small sphere)
