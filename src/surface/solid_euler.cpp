@@ -48,7 +48,7 @@ void
 SolidEulerChange::DistinctFaces::add (std::uint64_t key, std::uint32_t tetrahedron, int a, int b)
 {
   const std::size_t mask = keys_.size () - 1;
-  std::size_t at = static_cast<std::size_t> ((key * 0x9E3779B97F4A7C15u) >> 40) & mask;
+  std::size_t at = static_cast<std::size_t> ((key * 0x9E3779B97F4A7C15u) >> 32) & mask;
   for (; keys_[at] != EMPTY; at = (at + 1) & mask)
     if (keys_[at] == key)
     {
