@@ -700,7 +700,7 @@ private:
     // stops once it has reached the hull, or a tetrahedron an earlier search reached (which
     // reached the hull: the move is refused at the first search of the outside that does not).
     const std::uint32_t first_search = search + 1;
-    std::size_t searches = 0, to_hull = 0, small = 0;
+    std::size_t searches = 0, small = 0;
     std::vector<std::uint32_t> move = part, queue, distinct_seeds;
     if (side)
     {
@@ -767,16 +767,15 @@ private:
       else
       {
         ++searches;
-        to_hull += hull_reached;
         // A part of the solid that the search went all round is an object of its own if it has
         // as many points as one (FRAGMENT_VERTICES): a split may leave it apart.
         small += queue.size () <= HANDLE_REACH &&
                  (splits != Split::objects || tetrahedra_.verticesOf (queue).size () < FRAGMENT_VERTICES);
       }
     }
-    const bool connected = searches == 0                  ? hull_seed
-                           : !side && to_hull == searches ? true
-                                                          : searches == 1 && (!hull_seed || to_hull == 1);
+    // Every search of the outside that counts reached the hull (one that did not refused the
+    // move); the solid is connected when one search reached all of it.
+    const bool connected = searches == 0 ? hull_seed : !side || searches == 1;
     if (!connected && !(side && splits != Split::no && small == 0))
       return {};
     std::sort (move.begin (), move.end ());
