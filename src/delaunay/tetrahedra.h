@@ -4,6 +4,7 @@
 
 #include "delaunay/simplicial_complex.h"
 #include "util/filled_in_parallel.h"
+#include "util/portable.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -153,6 +154,17 @@ public:
     * across the facets that contain v, each in the order of its facets: an order that depends on
     * the triangulation alone. */
   void gatherStar (std::uint32_t v, Star& star) const;
+  /** \brief Starts fetching what gatherStar (\a v) reads first, for a caller that knows which
+    * star it gathers next. */
+  void prefetchStar (std::uint32_t v) const
+  {
+    const std::uint32_t t = tetrahedronOf (v);
+    if (t != NO_TETRAHEDRON)
+    {
+      prefetch (&neighbours_[4 * std::size_t (t)]);
+      prefetch (vertices (t));
+    }
+  }
   /** \brief The face of Del S with the \a n vertices \a v, found in the star of \a around (one of
     * them), gathered into \a star: a tetrahedron that has them all, and the mask of their local
     * indices in it; {NO_TETRAHEDRON, 0} if none has. */

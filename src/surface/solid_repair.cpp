@@ -918,6 +918,8 @@ private:
       const std::uint32_t v = stack.back ();
       stack.pop_back ();
       queued[v] = 0;
+      if (!stack.empty ())
+        tetrahedra_.prefetchStar (stack.back ());
       tetrahedra_.gatherStar (v, s.star);
       if (!starWithin (s.star, lo, hi))
       {
