@@ -96,11 +96,7 @@ Tetrahedra::gatherStar (std::uint32_t v, Star& star) const
     {
       const std::uint32_t u = neighbour (t, i);
       if (vertex (t, i) != v && u != OUTSIDE_HULL && star.add (u)) // across a facet that holds v
-      {
-        // Read when the search reaches it, a few tetrahedra on: fetched now.
-        prefetch (&neighbours_[4 * std::size_t (u)]);
-        prefetch (vertices (u));
-      }
+        prefetchTetrahedron (u); // read when the search reaches it, a few tetrahedra on
     }
   }
 }

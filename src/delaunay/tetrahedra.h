@@ -160,10 +160,7 @@ public:
   {
     const std::uint32_t t = tetrahedronOf (v);
     if (t != NO_TETRAHEDRON)
-    {
-      prefetch (&neighbours_[4 * std::size_t (t)]);
-      prefetch (vertices (t));
-    }
+      prefetchTetrahedron (t);
   }
   /** \brief The face of Del S with the \a n vertices \a v, found in the star of \a around (one of
     * them), gathered into \a star: a tetrahedron that has them all, and the mask of their local
@@ -172,6 +169,13 @@ public:
   ///@}
 
 private:
+  /** Starts fetching what a star search reads of \a t: its neighbours and its vertices. */
+  void prefetchTetrahedron (std::uint32_t t) const
+  {
+    prefetch (&neighbours_[4 * std::size_t (t)]);
+    prefetch (vertices (t));
+  }
+
   FilledInParallel<std::uint32_t> neighbours_;
   const SimplicialComplex* complex_ = nullptr;
   FilledInParallel<std::uint32_t> tetrahedron_of_vertex_;
