@@ -7,17 +7,6 @@
 namespace pcl_wrap::detail
 {
 
-namespace
-{
-
-bool
-isMoved (const std::vector<std::uint32_t>& moved, std::uint32_t t)
-{
-  return std::binary_search (moved.begin (), moved.end (), t);
-}
-
-} // namespace
-
 SolidEulerChange::SolidEulerChange (const Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& inside)
   : tetrahedra_ (tetrahedra), inside_ (inside), inside_at_vertex_ (tetrahedra.complex ().numVertices (), 0)
 {
@@ -44,11 +33,32 @@ SolidEulerChange::DistinctFaces::clear (std::size_t faces)
   }
 }
 
+namespace
+{
+
+std::size_t
+homeOf (std::uint64_t key, std::size_t mask)
+{
+  return static_cast<std::size_t> ((key * 0x9E3779B97F4A7C15u) >> 32) & mask;
+}
+
+} // namespace
+
+bool
+SolidEulerChange::DistinctFaces::contains (std::uint64_t key) const
+{
+  const std::size_t mask = keys_.size () - 1;
+  for (std::size_t at = homeOf (key, mask); keys_[at] != EMPTY; at = (at + 1) & mask)
+    if (keys_[at] == key)
+      return true;
+  return false;
+}
+
 void
 SolidEulerChange::DistinctFaces::add (std::uint64_t key, std::uint32_t tetrahedron, int a, int b)
 {
   const std::size_t mask = keys_.size () - 1;
-  std::size_t at = static_cast<std::size_t> ((key * 0x9E3779B97F4A7C15u) >> 32) & mask;
+  std::size_t at = homeOf (key, mask);
   for (; keys_[at] != EMPTY; at = (at + 1) & mask)
     if (keys_[at] == key)
     {
@@ -62,10 +72,10 @@ SolidEulerChange::DistinctFaces::add (std::uint64_t key, std::uint32_t tetrahedr
 }
 
 bool
-SolidEulerChange::edgeOnOtherInside (const DistinctFaces::Seen& edge, const std::vector<std::uint32_t>& moved) const
+SolidEulerChange::edgeOnOtherInside (const DistinctFaces::Seen& edge, const DistinctFaces& moved) const
 {
   return tetrahedra_.anyRoundEdge (edge.tetrahedron, edge.a, edge.b,
-                                   [&] (std::uint32_t t) { return inside_[t] && !isMoved (moved, t); });
+                                   [&] (std::uint32_t t) { return inside_[t] && !moved.contains (t); });
 }
 
 void
@@ -83,20 +93,21 @@ SolidEulerChange::operator() (const std::vector<std::uint32_t>& moved, Scratch& 
 {
   if (moved.empty ())
     return 0;
-  std::vector<std::uint32_t>& sorted = scratch.moved;
-  sorted.assign (moved.begin (), moved.end ());
-  std::sort (sorted.begin (), sorted.end ());
-  const bool moved_inside = inside_[sorted.front ()] != 0;
+  DistinctFaces& in_move = scratch.moved;
+  in_move.clear (moved.size ());
+  for (std::uint32_t t : moved)
+    in_move.add (t, t, 0, 0);
+  const bool moved_inside = inside_[moved.front ()] != 0;
   // chi (P) and chi (K), face by face: K's vertices, edges and triangles are those with an inside
   // coface not in P.
-  int chi_moved = -static_cast<int> (sorted.size ()), chi_k = 0;
+  int chi_moved = -static_cast<int> (moved.size ()), chi_k = 0;
   // Triangles: a triangle of two moved tetrahedra is counted at the lower, and is not in K; any
   // other is in K when the tetrahedron across it is inside.
-  for (std::uint32_t t : sorted)
+  for (std::uint32_t t : moved)
     for (int i = 0; i < 4; ++i)
     {
       const std::uint32_t u = tetrahedra_.neighbour (t, i);
-      if (u != OUTSIDE_HULL && isMoved (sorted, u))
+      if (u != OUTSIDE_HULL && in_move.contains (u))
         chi_moved += t < u;
       else
       {
@@ -106,8 +117,8 @@ SolidEulerChange::operator() (const std::vector<std::uint32_t>& moved, Scratch& 
     }
   // Vertices: in K when more inside tetrahedra have the vertex than the moved ones that are.
   DistinctFaces& faces = scratch.faces;
-  faces.clear (4 * sorted.size ());
-  for (std::uint32_t t : sorted)
+  faces.clear (4 * moved.size ());
+  for (std::uint32_t t : moved)
     for (int a = 0; a < 4; ++a)
       faces.add (tetrahedra_.vertex (t, a), t, a, a);
   for (const DistinctFaces::Seen& v : faces.seen ())
@@ -116,8 +127,8 @@ SolidEulerChange::operator() (const std::vector<std::uint32_t>& moved, Scratch& 
     chi_k += inside_at_vertex_[tetrahedra_.vertex (v.tetrahedron, v.a)] > (moved_inside ? v.uses : 0u);
   }
   // Edges: in K when an inside tetrahedron not moved is in the edge's ring.
-  faces.clear (6 * sorted.size ());
-  for (std::uint32_t t : sorted)
+  faces.clear (6 * moved.size ());
+  for (std::uint32_t t : moved)
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
       {
@@ -127,7 +138,7 @@ SolidEulerChange::operator() (const std::vector<std::uint32_t>& moved, Scratch& 
   for (const DistinctFaces::Seen& e : faces.seen ())
   {
     --chi_moved;
-    chi_k -= edgeOnOtherInside (e, sorted);
+    chi_k -= edgeOnOtherInside (e, in_move);
   }
   return moved_inside ? chi_k - chi_moved : chi_moved - chi_k;
 }

@@ -23,7 +23,7 @@ namespace pcl_wrap::detail
 class SolidEulerChange
 {
 public:
-  /** \brief The distinct vertices or edges of a move's tetrahedra, each with where it was first
+  /** \brief The distinct tetrahedra, vertices or edges of a move, each with where it was first
     * seen and how many of the tetrahedra have it: a small open-addressing table, emptied in the
     * time it was filled, so that weighing a move allocates nothing once warm. */
   class DistinctFaces
@@ -40,6 +40,8 @@ public:
     /** One more use of the face \a key (a vertex id, or an edge's two ids, the lower in the high
       * half), seen in \a tetrahedron at its local vertices \a a, \a b. */
     void add (std::uint64_t key, std::uint32_t tetrahedron, int a, int b);
+    /** Has the face \a key been added since the table was emptied? */
+    bool contains (std::uint64_t key) const;
     const std::vector<Seen>& seen () const { return seen_; }
 
   private:
@@ -53,7 +55,7 @@ public:
   /** \brief What one thread needs to weigh a move: reused from move to move. */
   struct Scratch
   {
-    std::vector<std::uint32_t> moved; // sorted
+    DistinctFaces moved; // the move's tetrahedra, keyed by id
     DistinctFaces faces;
   };
 
@@ -70,8 +72,8 @@ public:
   void changedSide (std::uint32_t t);
 
 private:
-  /** Is some inside tetrahedron that is not in \a moved (sorted) a coface of \a edge? */
-  bool edgeOnOtherInside (const DistinctFaces::Seen& edge, const std::vector<std::uint32_t>& moved) const;
+  /** Is some inside tetrahedron that is not in \a moved a coface of \a edge? */
+  bool edgeOnOtherInside (const DistinctFaces::Seen& edge, const DistinctFaces& moved) const;
 
   const Tetrahedra& tetrahedra_;
   const std::vector<std::uint8_t>& inside_;
