@@ -97,62 +97,83 @@ private:
 
 } // namespace
 
-OffVertices
-readOffStream (std::istream& in, std::size_t window_bytes, std::size_t chunk_bytes)
+bool
+nextNumbersLine (std::istream& in, std::vector<double>& numbers, std::size_t& lines, const char* what,
+                 std::string& problem)
 {
-  OffVertices out;
   std::string line;
-  std::vector<double> numbers;
-  std::size_t number = 0;
-  const auto fail = [&] (std::string problem) { // a copy: it may be out's own
+  while (std::getline (in, line))
+  {
+    ++lines;
+    if (!parseNumbers (line, numbers))
+    {
+      problem = "line " + std::to_string (lines) + ": not a number in " + what;
+      return false;
+    }
+    if (!numbers.empty ())
+      return true;
+  }
+  problem = std::string ("ends before ") + what;
+  return false;
+}
+
+OffHeader
+readOffHeader (std::istream& in)
+{
+  OffHeader out;
+  const auto fail = [&] (std::string problem) {
     out = {};
     out.error = std::move (problem);
     return out;
   };
-  // The next line with content; false at the end of the text or a line that is not numbers.
-  std::string problem;
-  const auto next = [&] (const char* what) {
-    while (std::getline (in, line))
-    {
-      ++number;
-      if (!parseNumbers (line, numbers))
-      {
-        problem = "line " + std::to_string (number) + ": not a number in " + what;
-        return false;
-      }
-      if (!numbers.empty ())
-        return true;
-    }
-    problem = std::string ("ends before ") + what;
-    return false;
-  };
-  std::string header;
-  while (header.empty () && std::getline (in, line))
+  std::string line, keyword;
+  while (keyword.empty () && std::getline (in, line))
   {
-    ++number;
-    std::istringstream (line.substr (0, line.find ('#'))) >> header;
+    ++out.lines;
+    std::istringstream (line.substr (0, line.find ('#'))) >> keyword;
   }
-  if (header.size () < 3 || header.compare (header.size () - 3, 3, "OFF") != 0)
+  if (keyword.size () < 3 || keyword.compare (keyword.size () - 3, 3, "OFF") != 0)
     return fail ("not an OFF file (no OFF header)");
   // [ST][C][N][4][n]OFF: a vertex line is x y z [nx ny nz] [r g b [a]] [s t].
-  const std::string prefix = header.substr (0, header.size () - 3);
+  const std::string prefix = keyword.substr (0, keyword.size () - 3);
   out.normals = prefix.find ('N') != std::string::npos;
   out.colours = prefix.find ('C') != std::string::npos;
   out.needed = 3 + (out.normals ? 3 : 0) + (out.colours ? 3 : 0);
-  // The counts may follow the keyword on the header line.
+  // The counts may follow the keyword on its line.
   std::istringstream rest (line.substr (line.find ("OFF") + 3));
   double count = 0;
   if (!(rest >> count))
   {
-    if (!next ("the vertex count"))
+    std::vector<double> numbers;
+    std::string problem;
+    if (!nextNumbersLine (in, numbers, out.lines, "the vertex count", problem))
       return fail (problem);
     count = numbers[0];
   }
   if (!(count >= 0 && count <= 4.0e9 && count == std::floor (count)))
     return fail ("bad vertex count");
-  const auto vertices = static_cast<std::size_t> (count);
+  out.vertices = static_cast<std::size_t> (count);
+  return out;
+}
+
+OffVertices
+readOffStream (std::istream& in, std::size_t window_bytes, std::size_t chunk_bytes)
+{
+  OffVertices out;
+  const auto fail = [&] (std::string problem) { // a copy: it may be out's own
+    out = {};
+    out.error = std::move (problem);
+    return out;
+  };
+  const OffHeader header = readOffHeader (in);
+  if (!header.error.empty ())
+    return fail (header.error);
+  out.normals = header.normals;
+  out.colours = header.colours;
+  out.needed = header.needed;
+  const std::size_t vertices = header.vertices;
   out.values.reserve (std::min<std::size_t> (vertices, 10000000) * out.needed);
-  VertexRows rows (out, vertices, number, chunk_bytes);
+  VertexRows rows (out, vertices, header.lines, chunk_bytes);
   if (!rows.done ())
     readInWindows (in, 0, window_bytes,
                    [&] (const char* first, const char* last, double) { return rows.parse (first, last); });
