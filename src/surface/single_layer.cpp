@@ -20,14 +20,27 @@ layerTriangles (const SimplicialComplex& complex, const Subcomplex& x)
 {
   if (complex.dimension () != 3)
     return {};
-  // X's triangles on the given number of X's tetrahedra, which X counts for each (0, 1 or 2).
-  const auto trianglesOn = [&] (std::uint32_t tetrahedra) {
-    return countInParallel (complex.size (2), [&] (std::size_t f) {
-      const Simplex triangle{2, static_cast<SimplexId> (f)};
-      return x.contains (triangle) && x.cofaceCount (triangle) == tetrahedra;
-    });
-  };
-  return {trianglesOn (0), trianglesOn (1)};
+  // X's triangles on none and on one of X's tetrahedra, which X counts for each (0, 1 or 2), in
+  // one pass on all threads.
+  using Counts = std::array<std::size_t, 2>;
+  const Counts counts = tbb::parallel_reduce (
+      tbb::blocked_range<std::size_t> (0, complex.size (2), 4096), Counts{0, 0},
+      [&] (const tbb::blocked_range<std::size_t>& r, Counts on) {
+        for (std::size_t f = r.begin (); f != r.end (); ++f)
+        {
+          const Simplex triangle{2, static_cast<SimplexId> (f)};
+          if (!x.contains (triangle))
+            continue;
+          const std::uint32_t tetrahedra = x.cofaceCount (triangle);
+          if (tetrahedra < 2)
+            ++on[tetrahedra];
+        }
+        return on;
+      },
+      [] (const Counts& a, const Counts& b) {
+        return Counts{a[0] + b[0], a[1] + b[1]};
+      });
+  return {counts[0], counts[1]};
 }
 
 bool
