@@ -303,7 +303,9 @@ TEST (CleanSurface, AHandCloseToTheBodyIsNotFusedToIt)
 {
   // The man's hand hangs a few spacings from his hip. The search for tunnels too long for a small
   // handle's patch, from sharp saddles, finds none between them: around every vertex, it would
-  // fill the gap, and take 184 of the hand's and the hip's points inside (1% of them).
+  // fill the gap, and take 184 of the hand's and the hip's points inside (1% of them). Where the
+  // arms meet the torso, the labelled solid fills narrow gaps and buries points a few tetrahedra
+  // deep; the mending reaches them as its moves open a way, one tetrahedron at a time.
   const auto points = load ("man.off");
   const WrapResult r = computeWrap (points);
   const SurfaceReport s = describeSurface (trianglesOf (r));
@@ -312,7 +314,7 @@ TEST (CleanSurface, AHandCloseToTheBodyIsNotFusedToIt)
   std::set<PointIndex> on;
   for (const auto& t : r.surface.triangles)
     on.insert (t.begin (), t.end ());
-  EXPECT_GE (on.size () * 100, points.size () * 98) << on.size () << " of " << points.size () << " points on it";
+  EXPECT_GE (on.size () * 100, points.size () * 99) << on.size () << " of " << points.size () << " points on it";
 }
 
 /** The longest edge of the default surface of \a points, in median edges of that surface. */

@@ -844,11 +844,11 @@ private:
     return needs;
   }
 
-  /** Mends the vertices of \a work (ascending) and those of every tetrahedron moved: the lowest
-    * first, then the vertices of each tetrahedron moved. On all threads, each block of
-    * MENDING_BLOCK consecutive ids mends those of its vertices whose star has vertices of the
-    * block only; then blocks shifted by half their length, and blocks sixteen times longer, mend
-    * those left, and the rest are mended one by one. A vertex's mending reads the labels of its
+  /** Mends the vertices of \a work (ascending) and those that every move may concern: the lowest
+    * first, then the vertices of each tetrahedron moved and the far corners of its neighbours.
+    * On all threads, each block of MENDING_BLOCK consecutive ids mends those of its vertices whose
+    * star has vertices of the block only; then blocks shifted by half their length, and blocks
+    * sixteen times longer, mend those left, and the rest are mended one by one. A vertex's mending reads the labels of its
     * star, of the tetrahedra across its star's facets and around its star's edges, and the counts
     * at its star's vertices, and moves tetrahedra of its star. Two vertices whose stars lie in
     * different blocks are at least three edges apart, so neither reads what the other moves: the
@@ -904,9 +904,9 @@ private:
     return rest;
   }
 
-  /** Mends the vertices of \a stack (popped from the back) and those of every tetrahedron moved,
-    * each whose star has vertices in [lo, hi) only; the others go to \a left. Returns the number
-    * of tetrahedra moved. */
+  /** Mends the vertices of \a stack (popped from the back) and those every move queues (the
+    * tetrahedron's vertices, its neighbours' far corners), each whose star has vertices in [lo, hi)
+    * only; the others go to \a left. Returns the number of tetrahedra moved. */
   std::size_t mendWithin (std::vector<std::uint32_t> stack, std::uint32_t lo, std::uint32_t hi,
                           std::vector<std::uint8_t>& queued, StarScratch& s, std::vector<std::uint32_t>& left)
   {
@@ -942,18 +942,32 @@ private:
         euler_change_->changedSide (t);
         flipped_[t] = 1;
         ++moved;
+        // Its vertices, and the far corner of each neighbour: a buried or floating point there
+        // may now have a tetrahedron of its star next to the other side, a way on.
         for (int i = 0; i < 4; ++i)
         {
-          const std::uint32_t u = complex_.vertex (3, t, i);
-          if (!queued[u])
-          {
-            queued[u] = 1;
-            stack.push_back (u);
-          }
+          queue (complex_.vertex (3, t, i), lo, hi, queued, stack, left);
+          const std::uint32_t across = tetrahedra_.neighbour (t, i);
+          if (across != OUTSIDE_HULL)
+            queue (tetrahedra_.vertex (across, tetrahedra_.mirrorIndex (t, i)), lo, hi, queued, stack, left);
         }
       }
     }
     return moved;
+  }
+
+  /** Puts \a u on mendWithin()'s \a stack, unless it is there; a vertex outside [lo, hi), which
+    * another block may be mending, goes to \a left. */
+  static void queue (std::uint32_t u, std::uint32_t lo, std::uint32_t hi, std::vector<std::uint8_t>& queued,
+                     std::vector<std::uint32_t>& stack, std::vector<std::uint32_t>& left)
+  {
+    if (u < lo || u >= hi)
+      left.push_back (u);
+    else if (!queued[u])
+    {
+      queued[u] = 1;
+      stack.push_back (u);
+    }
   }
 
   /** The weighing of moves by the solid's Euler characteristic, made (counting the inside
