@@ -2,10 +2,10 @@
 // Copyright (C) 2026 the pcl_wrap authors
 //
 // The repair of a labelled solid (docs/surface.md §2) on random labellings, checked vertex by
-// vertex against the surface's links found by brute force, the join of parts cut off the
-// solid through X, the points left floating in a cut, brought back, W's last points brought on a
-// tetrahedron at a time, webs across a gap cut
-// where bars the points sample stay, and the spacing of the sample around a lone point.
+// vertex against the surface's links found by brute force, buried points that the mending's
+// moves uncover brought on, the join of parts cut off the solid through X, the points left
+// floating in a cut, brought back, W's last points brought on a tetrahedron at a time, webs across
+// a gap cut where bars the points sample stay, and the spacing of the sample around a lone point.
 #include "wrap/boundary.h"
 #include "wrap/manifold_split.h"
 #include "wrap/retraction.h"
@@ -104,6 +104,34 @@ repairedSurface (const detail::Tetrahedra& tetrahedra, const std::vector<std::ui
   }
   const auto& triangles = split ? split->triangles : w.triangles;
   return {triangles.begin (), triangles.end ()};
+}
+
+/** The vertices off the surface of the solid \a inside (\a links empty) with a way on that the
+  * repair did not take: a tetrahedron of the star, on the side it was given (\a given), next to
+  * one on the other side (or, inside, to the hull's outside), whose move would put the vertex on. */
+std::vector<std::uint32_t>
+offTheSurfaceWithAWayOn (const detail::Tetrahedra& tetrahedra, const std::vector<std::uint8_t>& given,
+                         const std::vector<std::uint8_t>& inside, const std::vector<LinkEdges>& links)
+{
+  const detail::SimplicialComplex& complex = tetrahedra.complex ();
+  std::vector<std::uint8_t> way_on (complex.numVertices (), 0);
+  for (std::uint32_t t = 0; t < complex.size (3); ++t)
+  {
+    bool touches = false;
+    for (int i = 0; i < 4; ++i)
+    {
+      const std::uint32_t u = tetrahedra.neighbour (t, i);
+      touches = touches || (u == detail::OUTSIDE_HULL ? inside[t] != 0 : inside[u] != inside[t]);
+    }
+    if (touches && given[t] == inside[t])
+      for (int i = 0; i < 4; ++i)
+        way_on[complex.vertex (3, t, i)] = 1;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t v = 0; v < links.size (); ++v)
+    if (links[v].empty () && way_on[v])
+      out.push_back (v);
+  return out;
 }
 
 /** The ball of radius sqrt 0.4 about the origin (or, given \a x, X's tetrahedra) with one
@@ -235,6 +263,35 @@ surfaceEuler (const std::vector<LinkEdges>& links)
     }
   }
   return vertices - long (edges.size ()) + long (triangles.size ());
+}
+
+TEST (SolidRepair, AMoveThatUncoversABuriedPointLetsTheMendingBringItOn)
+{
+  // The solid is the whole hull of points in a cube, so every inner point is buried, and only those
+  // next to the hull have a tetrahedron of their star that touches the outside. Each move of the
+  // mending makes its neighbours touch the outside, and so gives the points a tetrahedron deeper
+  // a way on: none is left off the surface with a way on it did not take.
+  std::size_t left = 0, on = 0;
+  for (unsigned seed = 1; seed <= 20; seed += 2)
+  {
+    SCOPED_TRACE (seed);
+    const RandomSample sample (seed);
+    const Pipeline& p = sample.p;
+    detail::SolidLabels labels;
+    labels.inside.assign (p.complex.size (3), 1);
+    labels.margin.assign (p.complex.size (3), 1.0f);
+    const std::vector<std::uint8_t> given = labels.inside;
+
+    detail::repairSolid (p.tetrahedra, sample.x, p.points, labels);
+
+    const std::vector<LinkEdges> links = surfaceLinks (p.complex, labels.inside);
+    const std::vector<std::uint32_t> stranded = offTheSurfaceWithAWayOn (p.tetrahedra, given, labels.inside, links);
+    EXPECT_TRUE (stranded.empty ()) << stranded.size () << " off the surface with a way on, the first " << stranded[0];
+    left += stranded.size ();
+    for (const LinkEdges& link : links)
+      on += !link.empty ();
+  }
+  std::printf ("points on the surface: %zu, off it with a way on: %zu\n", on, left);
 }
 
 TEST (SolidRepair, PointsOfWComeOnATetrahedronAtATimeAndKeepTheSurfacesTopology)
