@@ -942,13 +942,13 @@ private:
         euler_change_->changedSide (t);
         flipped_[t] = 1;
         ++moved;
-        // Its vertices, and the far corner of each neighbour: a buried or floating point there
-        // may now have a tetrahedron of its star next to the other side, a way on.
+        // Its vertices, and the far corner of each neighbour on the side it left: that neighbour
+        // now touches the other side, so a buried or floating point there may have a way on.
         for (int i = 0; i < 4; ++i)
         {
           queue (complex_.vertex (3, t, i), lo, hi, queued, stack, left);
           const std::uint32_t across = tetrahedra_.neighbour (t, i);
-          if (across != OUTSIDE_HULL)
+          if (across != OUTSIDE_HULL && inside (across) != inside (t))
             queue (tetrahedra_.vertex (across, tetrahedra_.mirrorIndex (t, i)), lo, hi, queued, stack, left);
         }
       }
