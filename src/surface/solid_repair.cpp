@@ -845,14 +845,15 @@ private:
   }
 
   /** Mends the vertices of \a work (ascending) and those that every move may concern: the lowest
-    * first, then the vertices of each tetrahedron moved and the far corners of its neighbours.
-    * On all threads, each block of MENDING_BLOCK consecutive ids mends those of its vertices whose
-    * star has vertices of the block only; then blocks shifted by half their length, and blocks
-    * sixteen times longer, mend those left, and the rest are mended one by one. A vertex's mending reads the labels of its
-    * star, of the tetrahedra across its star's facets and around its star's edges, and the counts
-    * at its star's vertices, and moves tetrahedra of its star. Two vertices whose stars lie in
-    * different blocks are at least three edges apart, so neither reads what the other moves: the
-    * result depends on the labels alone, not on the threads. */
+    * first, then the vertices of each tetrahedron moved and the far corners of its neighbours on
+    * the side it left. On all threads, each block of MENDING_BLOCK consecutive ids mends those of
+    * its vertices whose star has vertices of the block only; then blocks shifted by half their
+    * length, and blocks sixteen times longer, mend those left, and the rest are mended one by one.
+    * A vertex's mending reads the labels of its star, of the tetrahedra across its star's facets
+    * and around its star's edges, and the counts at its star's vertices, and moves tetrahedra of
+    * its star. Two vertices whose stars lie in different blocks are at least three edges apart, so
+    * neither reads what the other moves: the result depends on the labels alone, not on the
+    * threads. */
   void mend (std::vector<std::uint32_t> work, SolidRepair& done)
   {
     if (work.empty ())
@@ -905,8 +906,9 @@ private:
   }
 
   /** Mends the vertices of \a stack (popped from the back) and those every move queues (the
-    * tetrahedron's vertices, its neighbours' far corners), each whose star has vertices in [lo, hi)
-    * only; the others go to \a left. Returns the number of tetrahedra moved. */
+    * tetrahedron's vertices, the far corners of its neighbours on the side it left), each whose
+    * star has vertices in [lo, hi) only; the others go to \a left. Returns the number of
+    * tetrahedra moved. */
   std::size_t mendWithin (std::vector<std::uint32_t> stack, std::uint32_t lo, std::uint32_t hi,
                           std::vector<std::uint8_t>& queued, StarScratch& s, std::vector<std::uint32_t>& left)
   {
