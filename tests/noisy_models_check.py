@@ -13,7 +13,9 @@ belly, where mending a pinch by moving a fan of long tetrahedra across the gap w
 by a web of many handles (docs/surface.md, section 2); and coarse dinos whose noise leaves a few
 points beside the surface labelled a solid of their own, which X ties to the rest by edges alone,
 and which would otherwise come out as a closed piece of its own (docs/surface.md, "Joining what
-the labelling cut apart"). Each must
+the labelling cut apart"); and a coarse dino whose first cut of a handle at a foot leaves a void
+touching the surface at a vertex, which, counted as one part with the surface, would hide the
+handle from the search that follows (docs/surface.md, "Cutting small handles"). Each must
 come out closed, vertex-manifold, in one piece with the mesh's genus and at least 99% of the
 points on it (bench/corpus_table.py's test). Uses BUILD_DIR/bench/bench_peers and mesh_quality.
 """
@@ -40,6 +42,7 @@ CASES = [  # mesh, points, noise in median spacings, seed
     ("dino", 10000, 0.25, 3),
     ("dino", 10000, 1.0, 4),
     ("dino", 10000, 0.5, 5),
+    ("dino", 10000, 1.0, 5),
 ]
 
 

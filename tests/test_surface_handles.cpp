@@ -4,7 +4,8 @@
 // Where the surface stage looks for small handles to cut (docs/surface.md §2): on tori made of
 // quads, a handle a few rings around is found, a large or long one is not; on the boundary of a
 // plate of voxels, a tunnel one voxel wide is found as a tunnel, a wide hole is not; a surface
-// touching itself at a vertex has no handle there; asked to look near some vertices only, it
+// touching itself at a vertex has no handle there, nor does a sphere touching a torus at a vertex
+// hide the torus's; asked to look near some vertices only, it
 // looks nowhere else; on a surface of genus 0, a thin bar between two slabs is found from the
 // sharp saddles at its ends.
 #include "surface/surface_handles.h"
@@ -266,6 +267,34 @@ TEST (SurfaceHandles, APinchIsNoHandle)
     three.insert (three.end (), sphere.begin (), sphere.end ());
   }
   EXPECT_TRUE (detail::smallHandlePatches (three, 145).centres.empty ());
+}
+
+TEST (SurfaceHandles, ASphereTouchingATorusAtAVertexHidesNoHandle)
+{
+  // A small torus (ids 0..47) and an octahedron whose first vertex is the torus's vertex 0: one
+  // piece through that vertex, whose V - F / 2 (the vertex counted once per fan) is 0 + 2, a
+  // sphere's. Apart at the vertex, they are a torus and a sphere: the torus's handle is found.
+  std::vector<Triangle> triangles;
+  addTorus (8, 6, 0, triangles);
+  std::vector<Triangle> octahedron;
+  addOctahedron (48, octahedron);
+  for (Triangle& t : octahedron)
+  {
+    std::replace (t.begin (), t.end (), 48u, 0u);
+    triangles.push_back (t);
+  }
+  const detail::SmallHandlePatches patches = detail::smallHandlePatches (triangles, 54);
+  EXPECT_TRUE (patches.has_genus);
+  ASSERT_FALSE (patches.centres.empty ());
+  EXPECT_LT (patches.centres.back (), 48u) << "on the torus only";
+  // Two such spheres, at two vertices: the same.
+  for (Triangle t : octahedron)
+  {
+    for (std::uint32_t& v : t)
+      v = v == 0 ? 20 : v + 6;
+    triangles.push_back (t);
+  }
+  EXPECT_TRUE (detail::smallHandlePatches (triangles, 60).has_genus);
 }
 
 TEST (SurfaceHandles, OnlyNearTheGivenVertices)

@@ -200,8 +200,8 @@ enum class HandleKind
 class HandleFinder
 {
 public:
-  HandleFinder (const std::vector<Triangle>& triangles, std::uint32_t n, int rings)
-    : triangles_ (triangles), around_ (triangles, n), n_ (n), rings_ (rings)
+  HandleFinder (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t n, int rings)
+    : triangles_ (triangles), around_ (around), n_ (n), rings_ (rings)
   {}
 
   /** Does the patch of rings_ rings around \a v hold a handle or go round a handle's tube?
@@ -425,18 +425,6 @@ public:
     return false;
   }
 
-  /** How many fans of triangles meet at \a v: the connected parts of its link, one where the
-    * surface is a 2-manifold, more where it touches itself there (a pinch). */
-  std::uint32_t fansAround (std::uint32_t v) const
-  {
-    const std::size_t first = around_.begin[v], k = around_.begin[v + 1] - first;
-    const auto edge = [&] (std::size_t e) {
-      const TrianglesAround::Corner& c = around_.corner[first + e];
-      return std::make_pair (c.next (), c.previous ());
-    };
-    return isOneShortCycle (k, edge) ? 1 : linkShape (k, edge).parts;
-  }
-
   /** Clears the flags in \a look of the vertices more than \a rings rings from all of \a seeds. */
   void keepNear (const std::vector<std::uint32_t>& seeds, int rings, std::vector<std::uint8_t>& look) const
   {
@@ -579,9 +567,120 @@ private:
   }
 
   const std::vector<Triangle>& triangles_;
-  const TrianglesAround around_;
+  const TrianglesAround& around_;
   const std::uint32_t n_;
   const int rings_; ///< how many rings of triangles around a vertex make its patch
+};
+
+/** Calls \a f (t, first) for each triangle t around \a v, with first the first triangle of t's
+  * fan there (a connected part of v's link); returns how many fans there are: one where the
+  * surface is a 2-manifold, more where it touches itself at v (a pinch). */
+template <class F>
+std::uint32_t
+forEachFanMember (const TrianglesAround& around, std::uint32_t v, const F& f)
+{
+  const std::size_t first = around.begin[v], k = around.begin[v + 1] - first;
+  const auto corner = [&] (std::size_t e) -> const TrianglesAround::Corner& { return around.corner[first + e]; };
+  const auto edge = [&] (std::size_t e) { return std::make_pair (corner (e).next (), corner (e).previous ()); };
+  if (k == 0)
+    return 0;
+  if (isOneShortCycle (k, edge))
+  {
+    for (std::size_t e = 0; e < k; ++e)
+      f (corner (e).triangle (), corner (0).triangle ());
+    return 1;
+  }
+  // Triangles joined where they share an edge at v (a few, so pairwise), each fan under its first.
+  UnionFind fans (k);
+  std::uint32_t count = static_cast<std::uint32_t> (k);
+  for (std::size_t b = 1; b < k; ++b)
+    for (std::size_t a = 0; a < b; ++a)
+    {
+      const auto [na, pa] = edge (a);
+      const auto [nb, pb] = edge (b);
+      const auto ra = fans.find (static_cast<std::uint32_t> (a)), rb = fans.find (static_cast<std::uint32_t> (b));
+      if (ra != rb && (na == nb || na == pb || pa == nb || pa == pb))
+      {
+        fans.attach (std::max (ra, rb), std::min (ra, rb));
+        --count;
+      }
+    }
+  for (std::size_t e = 0; e < k; ++e)
+    f (corner (e).triangle (), corner (fans.find (static_cast<std::uint32_t> (e))).triangle ());
+  return count;
+}
+
+/** The closed surfaces a surface is made of: its triangles joined where they share an edge, so
+  * that where the surface touches itself at a vertex (a pinch the mending left, split after the
+  * repair) the surfaces meeting there are parts of their own. Joined there, a sphere (an unsampled
+  * void touching the outside at a vertex) would add 2 to a torus's V - F / 2 and hide its
+  * handle. Found on all threads. */
+struct SurfaceParts
+{
+  static constexpr std::uint32_t NONE = ~std::uint32_t (0);
+
+  std::vector<std::uint32_t> of_triangle; ///< per triangle, its part
+  std::vector<long> faces;                ///< per part
+  std::vector<long> vertices;             ///< per part, each vertex once per fan of its triangles there
+  std::vector<std::uint8_t> pinched;      ///< per part: it touches itself or another part at a vertex
+  std::vector<std::uint32_t> of_vertex;   ///< per vertex, the part of its first triangle (NONE: none)
+  std::vector<std::uint8_t> pinch;        ///< per vertex: its triangles make more than one fan
+
+  SurfaceParts (const std::vector<Triangle>& triangles, const TrianglesAround& around, std::uint32_t n)
+    : of_vertex (n, NONE), pinch (n, 0)
+  {
+    const std::size_t f = triangles.size ();
+    UnionFind sets;
+    sets.resetInParallel (f);
+    // Triangles that share an edge at a vertex are in one fan there: each joined to the fan's
+    // first.
+    parallelForEach (n, [&] (std::size_t v) {
+      const std::uint32_t fans =
+          forEachFanMember (around, static_cast<std::uint32_t> (v), [&] (std::uint32_t t, std::uint32_t first) {
+            if (t != first)
+              sets.uniteConcurrently (first, t);
+          });
+      pinch[v] = fans > 1;
+    });
+    // Each root the lowest triangle of its part: numbered in ascending order.
+    of_triangle.resize (f);
+    std::uint32_t parts = 0;
+    for (std::size_t k = 0; k < f; ++k)
+      of_triangle[k] = sets.isRoot (static_cast<std::uint32_t> (k)) ? parts++ : of_triangle[sets.find (k)];
+    faces.assign (parts, 0);
+    vertices.assign (parts, 0);
+    pinched.assign (parts, 0);
+    for (std::uint32_t p : of_triangle)
+      ++faces[p];
+    parallelForEach (n, [&] (std::size_t v) {
+      if (around.begin[v] < around.begin[v + 1])
+        of_vertex[v] = of_triangle[around.corner[around.begin[v]].triangle ()];
+    });
+    for (std::uint32_t v = 0; v < n; ++v)
+      forEachPartAt (around, v, [&] (std::uint32_t p) {
+        ++vertices[p];
+        pinched[p] = pinched[p] || pinch[v];
+      });
+  }
+
+  /** Is part \a p a closed surface of genus above 0 (V - F / 2 = 2 - 2 g)? */
+  bool hasGenus (std::uint32_t p) const { return faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2; }
+
+  /** Calls \a f with the part of each fan of triangles around \a v. */
+  template <class F>
+  void forEachPartAt (const TrianglesAround& around, std::uint32_t v, const F& f) const
+  {
+    if (!pinch[v])
+    {
+      if (of_vertex[v] != NONE)
+        f (of_vertex[v]);
+      return;
+    }
+    forEachFanMember (around, v, [&] (std::uint32_t t, std::uint32_t first) {
+      if (t == first)
+        f (of_triangle[t]);
+    });
+  }
 };
 
 /** smallHandlePatches(), or with \a wide wideTunnelPatches(). */
@@ -590,56 +689,33 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
                const std::vector<std::uint32_t>* near, const std::vector<std::array<double, 3>>* positions, bool wide)
 {
   const int rings = wide ? WIDE_TUNNEL_RINGS : HANDLE_RINGS;
-  // The genus of each connected part, from V - E + F with E = 3F / 2. The parts are found on all
-  // threads.
-  std::vector<std::uint32_t> part (num_vertices);
-  {
-    UnionFind parts;
-    parts.resetInParallel (num_vertices);
-    parallelForEach (triangles.size (), [&] (std::size_t k) {
-      parts.uniteConcurrently (triangles[k][0], triangles[k][1]);
-      parts.uniteConcurrently (triangles[k][0], triangles[k][2]);
+  const TrianglesAround around (triangles, num_vertices);
+  const SurfaceParts parts (triangles, around, num_vertices);
+  // Per vertex: whether one of its parts has a genus, whether one is a closed surface of genus 0
+  // (where the sharp saddles are looked for; not a part with a pinch, whose angles there add up
+  // over several fans), and the part of its first triangle.
+  std::vector<std::uint8_t> look (num_vertices, 0), of_genus_zero (num_vertices, 0);
+  parallelForEach (num_vertices, [&] (std::size_t v) {
+    parts.forEachPartAt (around, static_cast<std::uint32_t> (v), [&] (std::uint32_t p) {
+      if (parts.hasGenus (p))
+        look[v] = 1;
+      else if (parts.faces[p] % 2 == 0 && !parts.pinched[p])
+        of_genus_zero[v] = 1;
     });
-    parallelForEach (num_vertices,
-                     [&] (std::size_t v) { part[v] = parts.findConcurrently (static_cast<std::uint32_t> (v)); });
-  }
-  std::vector<long> faces (num_vertices, 0), vertices (num_vertices, 0);
-  std::vector<std::uint8_t> on (num_vertices, 0);
-  for (const Triangle& t : triangles)
-  {
-    ++faces[part[t[0]]];
-    on[t[0]] = on[t[1]] = on[t[2]] = 1;
-  }
+  });
+  bool on_handles = false, any_of_genus_zero = false;
   for (std::uint32_t v = 0; v < num_vertices; ++v)
-    vertices[part[v]] += on[v];
-  // Flags in look each vertex flagged in where whose part has a genus (a closed surface of genus g
-  // has V - F / 2 = 2 - 2g); says whether it flagged any.
-  std::vector<std::uint8_t> look (num_vertices, 0);
-  const auto lookOnHandles = [&] (const std::vector<std::uint8_t>& where) {
-    bool any = false;
-    for (std::uint32_t v = 0; v < num_vertices; ++v)
-    {
-      const std::uint32_t p = part[v];
-      look[v] = where[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 < 2;
-      any = any || look[v];
-    }
-    return any;
-  };
-  SmallHandlePatches out;
-  bool on_handles = lookOnHandles (on);
-  // The vertices of the closed parts of genus 0, where the sharp saddles are looked for (a vertex
-  // where such a part touches itself, counted once per fan, only adds to its V - F / 2).
-  std::vector<std::uint8_t> of_genus_zero;
-  bool any_of_genus_zero = false;
-  if (positions && !wide)
   {
-    of_genus_zero.resize (num_vertices);
-    for (std::uint32_t v = 0; v < num_vertices; ++v)
-    {
-      const std::uint32_t p = part[v];
-      of_genus_zero[v] = on[v] && faces[p] % 2 == 0 && vertices[p] - faces[p] / 2 >= 2;
-      any_of_genus_zero = any_of_genus_zero || of_genus_zero[v];
-    }
+    on_handles = on_handles || look[v];
+    any_of_genus_zero = any_of_genus_zero || of_genus_zero[v];
+  }
+  const std::vector<std::uint32_t>& part = parts.of_vertex;
+  SmallHandlePatches out;
+  out.has_genus = on_handles && !wide;
+  if (!positions || wide)
+  {
+    of_genus_zero.clear ();
+    any_of_genus_zero = false;
   }
   if (!on_handles && !any_of_genus_zero)
     return out;
@@ -652,40 +728,22 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
     // The sharp saddles of the parts with a genus, where a tunnel's tube ends, as a web's does;
     // but only on a part where they are few. Where noise makes them common, they mark no tube.
     const std::vector<std::uint32_t> ends = sharpSaddles (triangles, *positions, look);
-    std::vector<long> saddles_of (num_vertices, 0);
+    std::vector<long> saddles_of (parts.faces.size (), 0);
     for (std::uint32_t v : ends)
       ++saddles_of[part[v]];
     on_handles = false;
     for (std::uint32_t v = 0; v < num_vertices; ++v)
     {
-      look[v] = look[v] && saddles_of[part[v]] * WIDE_TUNNEL_SADDLE_SHARE <= vertices[part[v]];
+      look[v] = look[v] && saddles_of[part[v]] * WIDE_TUNNEL_SADDLE_SHARE <= parts.vertices[part[v]];
       on_handles = on_handles || look[v];
     }
-    // The centres, once the pinches are counted: the saddles of the parts still looked at.
     of_tunnel_ends.assign (num_vertices, 0);
     for (std::uint32_t v : ends)
       of_tunnel_ends[v] = 1;
   }
   if (!on_handles && saddles.empty ())
     return out;
-  const HandleFinder finder (triangles, num_vertices, rings);
-  if (on_handles)
-  {
-    // Where the surface touches itself at a vertex (a pinch the mending left, split after the
-    // repair), the part has one vertex fewer than a surface of its genus, and would look as if it
-    // had a handle more: each vertex counts once per fan of triangles there.
-    std::vector<std::uint32_t> fans (num_vertices, 1);
-    parallelForEach (num_vertices, [&] (std::size_t v) {
-      if (look[v])
-        fans[v] = finder.fansAround (static_cast<std::uint32_t> (v));
-    });
-    for (std::uint32_t v = 0; v < num_vertices; ++v)
-      vertices[part[v]] += fans[v] - 1;
-    on_handles = lookOnHandles (look);
-    out.has_genus = on_handles && !wide;
-  }
-  if (!on_handles && saddles.empty ())
-    return out;
+  const HandleFinder finder (triangles, around, num_vertices, rings);
   if (wide)
     for (std::uint32_t v = 0; v < num_vertices; ++v)
       look[v] = look[v] && of_tunnel_ends[v];

@@ -39,11 +39,12 @@ struct SmallHandlePatches
 /** \brief The vertices of a closed surface near which it has a small handle: a handle whose tube
   * a few rings of triangles around the vertex go round.
   *
-  * The connected parts of the surface whose genus (from the Euler characteristic, V - F / 2
-  * for a closed surface, a vertex where the surface touches itself counted once per fan of
-  * triangles there) is above zero are looked at; given the vertices' positions, so are the
-  * sharp saddles of the parts of genus 0 and their neighbours, where a thin tube may join two
-  * wider parts (a bridge between two objects). The angles of the triangles at a vertex add up to
+  * The connected parts of the surface (its triangles joined where they share an edge, so that
+  * surfaces touching at a vertex are parts of their own) whose genus (from the Euler
+  * characteristic, V - F / 2 for a closed surface, a vertex where a part touches itself counted
+  * once per fan of triangles there) is above zero are looked at; given the vertices' positions,
+  * so are the sharp saddles of the parts of genus 0 that touch nothing at a vertex, and their
+  * neighbours, where a thin tube may join two wider parts (a bridge between two objects). The angles of the triangles at a vertex add up to
   * 2 pi less the surface's curvature there; a tube that joins two closed surfaces into one takes
   * 4 pi of curvature away (Gauss-Bonnet), about 2 pi where each of its ends meets a wider part,
   * and on a tube a few triangles across that lies on a few vertices, whose angles add up to more
