@@ -154,11 +154,14 @@ TEST (LinkCycle, TheShortWalkAgreesWithTheSortedEnds)
   EXPECT_GT (cycles, 15000u);
 }
 
-/** The connected parts of the graph of \a edges, by a depth-first search. */
+/** The connected parts of the graph of \a edges, by a depth-first search; \a part, if given, gets
+  * each edge's part, numbered from 0. */
 std::uint32_t
-partsBySearch (const std::vector<Edge>& edges)
+partsBySearch (const std::vector<Edge>& edges, std::vector<std::uint32_t>* part = nullptr)
 {
   std::vector<std::uint8_t> seen (edges.size (), 0);
+  if (part)
+    part->assign (edges.size (), 0);
   std::uint32_t parts = 0;
   for (std::size_t start = 0; start < edges.size (); ++start)
   {
@@ -169,6 +172,8 @@ partsBySearch (const std::vector<Edge>& edges)
     seen[start] = 1;
     while (!stack.empty ())
     {
+      if (part)
+        (*part)[stack.back ()] = parts - 1;
       const Edge e = edges[stack.back ()];
       stack.pop_back ();
       for (std::size_t f = 0; f < edges.size (); ++f)
@@ -201,9 +206,20 @@ TEST (LinkCycle, PartsAreTheGraphsConnectedParts)
     }
     std::shuffle (edges.begin (), edges.end (), random);
     const detail::LinkShape shape = shapeOf (edges);
-    const std::uint32_t expected = partsBySearch (edges);
+    std::vector<std::uint32_t> part;
+    const std::uint32_t expected = partsBySearch (edges, &part);
     ASSERT_EQ (shape.parts, expected) << "trial " << trial;
     several += expected > 1;
+    // Each edge named by an edge of its own part, the same for the whole part.
+    std::vector<std::uint32_t> part_of (edges.size ());
+    detail::linkShape (
+        edges.size (), [&] (std::size_t e) { return std::make_pair (edges[e][0], edges[e][1]); }, part_of.data ());
+    for (std::size_t a = 0; a < edges.size (); ++a)
+    {
+      ASSERT_EQ (part[part_of[a]], part[a]) << "trial " << trial;
+      for (std::size_t b = 0; b < a; ++b)
+        ASSERT_EQ (part_of[a] == part_of[b], part[a] == part[b]) << "trial " << trial;
+    }
   }
   EXPECT_GT (several, 500u);
   // Two fans at a pinch are two cycles; a third triangle on an edge makes two cycles share an end.

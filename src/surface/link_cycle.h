@@ -22,10 +22,11 @@ struct LinkShape
 /** \brief The shape of the \a k edges edge(0), ..., edge(k - 1), each a pair of vertex ids. A vertex
   * of a closed 2-manifold has one cycle; where the surface touches itself at the vertex, there is
   * one cycle per fan of triangles; where an edge at it has more than two triangles, two cycles
-  * share an end. */
+  * share an end. If \a part_of is given, part_of[e] is set to one edge of edge e's part, the same
+  * for the whole part. */
 template <class Edge>
 LinkShape
-linkShape (std::size_t k, const Edge& edge)
+linkShape (std::size_t k, const Edge& edge, std::uint32_t* part_of = nullptr)
 {
   // (end, edge) for both ends of every edge, sorted, and a union-find over the edges.
   constexpr std::size_t ON_STACK = 32;
@@ -69,6 +70,9 @@ linkShape (std::size_t k, const Edge& edge)
     }
     shape.cycles = shape.cycles && b - a == 2;
   }
+  if (part_of)
+    for (std::size_t e = 0; e < k; ++e)
+      part_of[e] = root (static_cast<std::uint32_t> (e));
   return shape;
 }
 

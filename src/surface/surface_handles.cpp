@@ -572,9 +572,9 @@ private:
   const int rings_; ///< how many rings of triangles around a vertex make its patch
 };
 
-/** Calls \a f (t, first) for each triangle t around \a v, with first the first triangle of t's
-  * fan there (a connected part of v's link); returns how many fans there are: one where the
-  * surface is a 2-manifold, more where it touches itself at v (a pinch). */
+/** Calls \a f (t, first) for each triangle t around \a v, with first one triangle of t's fan there
+  * (a connected part of v's link), the same for the whole fan; returns how many fans there are:
+  * one where the surface is a 2-manifold, more where it touches itself at v (a pinch). */
 template <class F>
 std::uint32_t
 forEachFanMember (const TrianglesAround& around, std::uint32_t v, const F& f)
@@ -590,24 +590,11 @@ forEachFanMember (const TrianglesAround& around, std::uint32_t v, const F& f)
       f (corner (e).triangle (), corner (0).triangle ());
     return 1;
   }
-  // Triangles joined where they share an edge at v (a few, so pairwise), each fan under its first.
-  UnionFind fans (k);
-  std::uint32_t count = static_cast<std::uint32_t> (k);
-  for (std::size_t b = 1; b < k; ++b)
-    for (std::size_t a = 0; a < b; ++a)
-    {
-      const auto [na, pa] = edge (a);
-      const auto [nb, pb] = edge (b);
-      const auto ra = fans.find (static_cast<std::uint32_t> (a)), rb = fans.find (static_cast<std::uint32_t> (b));
-      if (ra != rb && (na == nb || na == pb || pa == nb || pa == pb))
-      {
-        fans.attach (std::max (ra, rb), std::min (ra, rb));
-        --count;
-      }
-    }
+  std::vector<std::uint32_t> fan_of (k);
+  const LinkShape shape = linkShape (k, edge, fan_of.data ());
   for (std::size_t e = 0; e < k; ++e)
-    f (corner (e).triangle (), corner (fans.find (static_cast<std::uint32_t> (e))).triangle ());
-  return count;
+    f (corner (e).triangle (), corner (fan_of[e]).triangle ());
+  return shape.parts;
 }
 
 /** The closed surfaces a surface is made of: its triangles joined where they share an edge, so
@@ -694,29 +681,23 @@ handlePatches (const std::vector<Triangle>& triangles, std::uint32_t num_vertice
   // Per vertex: whether one of its parts has a genus, whether one is a closed surface of genus 0
   // (where the sharp saddles are looked for; not a part with a pinch, whose angles there add up
   // over several fans), and the part of its first triangle.
-  std::vector<std::uint8_t> look (num_vertices, 0), of_genus_zero (num_vertices, 0);
+  const bool saddles_looked_for = positions && !wide;
+  std::vector<std::uint8_t> look (num_vertices, 0), of_genus_zero;
+  if (saddles_looked_for)
+    of_genus_zero.assign (num_vertices, 0);
   parallelForEach (num_vertices, [&] (std::size_t v) {
     parts.forEachPartAt (around, static_cast<std::uint32_t> (v), [&] (std::uint32_t p) {
       if (parts.hasGenus (p))
         look[v] = 1;
-      else if (parts.faces[p] % 2 == 0 && !parts.pinched[p])
+      else if (saddles_looked_for && parts.faces[p] % 2 == 0 && !parts.pinched[p])
         of_genus_zero[v] = 1;
     });
   });
-  bool on_handles = false, any_of_genus_zero = false;
-  for (std::uint32_t v = 0; v < num_vertices; ++v)
-  {
-    on_handles = on_handles || look[v];
-    any_of_genus_zero = any_of_genus_zero || of_genus_zero[v];
-  }
+  bool on_handles = std::find (look.begin (), look.end (), 1) != look.end ();
+  const bool any_of_genus_zero = std::find (of_genus_zero.begin (), of_genus_zero.end (), 1) != of_genus_zero.end ();
   const std::vector<std::uint32_t>& part = parts.of_vertex;
   SmallHandlePatches out;
   out.has_genus = on_handles && !wide;
-  if (!positions || wide)
-  {
-    of_genus_zero.clear ();
-    any_of_genus_zero = false;
-  }
   if (!on_handles && !any_of_genus_zero)
     return out;
   std::vector<std::uint32_t> saddles;

@@ -42,24 +42,24 @@ struct SmallHandlePatches
   * The connected parts of the surface (its triangles joined where they share an edge, so that
   * surfaces touching at a vertex are parts of their own) whose genus (from the Euler
   * characteristic, V - F / 2 for a closed surface, a vertex where a part touches itself counted
-  * once per fan of triangles there) is above zero are looked at; given the vertices' positions,
-  * so are the sharp saddles of the parts of genus 0 that touch nothing at a vertex, and their
-  * neighbours, where a thin tube may join two wider parts (a bridge between two objects). The angles of the triangles at a vertex add up to
-  * 2 pi less the surface's curvature there; a tube that joins two closed surfaces into one takes
-  * 4 pi of curvature away (Gauss-Bonnet), about 2 pi where each of its ends meets a wider part,
-  * and on a tube a few triangles across that lies on a few vertices, whose angles add up to more
-  * than 2 pi + SADDLE_EXCESS. On a sampled surface, smooth or noisy, few vertices do. The
-  * centres are a maximal independent set of the vertices looked at (each is one or next to one).
-  * Around a centre, the triangles within HANDLE_RINGS rings make a patch; it is a disc where the
-  * surface has no small handle. Where it is not, it holds a handle (its own genus is above zero,
-  * a boundary vertex where it touches itself counted once per fan of its triangles there),
-  * or it goes round a thin tube: a handle's when the rest of the surface joins the patch's
-  * boundary loops near the patch (within twice as many rings again), a thin part's (a finger, a
-  * tail) when a loop cuts a part off, a tunnel's when the surface opens out past both ends (a hole
-  * through a wall, a web across a gap), a ring's when it does not (the tube closes far away). On a
-  * part of genus 0, a tube with two boundary loops that the rest of the surface does not join near
-  * is a neck (SmallHandlePatches::neck) where it does not open out past both: the last tie between
-  * two small objects, or a finger.
+  * once per fan of triangles there) is above zero are looked at; given the vertices' positions, so
+  * are the sharp saddles of the parts of genus 0 that touch nothing at a vertex, and their
+  * neighbours, where a thin tube may join two wider parts (a bridge between two objects). The
+  * angles of the triangles at a vertex add up to 2 pi less the surface's curvature there; a tube
+  * that joins two closed surfaces into one takes 4 pi of curvature away (Gauss-Bonnet), about 2 pi
+  * where each of its ends meets a wider part, and on a tube a few triangles across that lies on a
+  * few vertices, whose angles add up to more than 2 pi + SADDLE_EXCESS. On a sampled surface,
+  * smooth or noisy, few vertices do. The centres are a maximal independent set of the vertices
+  * looked at (each is one or next to one). Around a centre, the triangles within HANDLE_RINGS rings
+  * make a patch; it is a disc where the surface has no small handle. Where it is not, it holds a
+  * handle (its own genus is above zero, a boundary vertex where it touches itself counted once per
+  * fan of its triangles there), or it goes round a thin tube: a handle's when the rest of the
+  * surface joins the patch's boundary loops near the patch (within twice as many rings again), a
+  * thin part's (a finger, a tail) when a loop cuts a part off, a tunnel's when the surface opens
+  * out past both ends (a hole through a wall, a web across a gap), a ring's when it does not (the
+  * tube closes far away). On a part of genus 0, a tube with two boundary loops that the rest of the
+  * surface does not join near is a neck (SmallHandlePatches::neck) where it does not open out past
+  * both: the last tie between two small objects, or a finger.
   * \param[in] triangles a closed surface's, vertex ids below \a num_vertices
   * \param[in] near if given, only centres within 2 HANDLE_RINGS rings of one of these vertices
   * \param[in] positions if given, per vertex: the parts of genus 0 are looked at near sharp saddles */
