@@ -240,17 +240,6 @@ TEST (Mpi, RealScan)
   expectIdentical (fs::path (PCL_WRAP_DATA_DIR) / "bunny00.off", {2, 4});
 }
 
-TEST (Mpi, FlatInputIsAClearError)
-{
-  std::vector<Point3> points;
-  for (const Point3& p : test::cubeSample (200, 11))
-    points.push_back ({p[0], p[1], 0.0});
-  const fs::path log = scratch () / "flat.log";
-  EXPECT_EQ (runMpi (2, writeCloud ("flat", points).string () + " " + (scratch () / "f.ply").string () + " --raw", log),
-             1);
-  EXPECT_NE (readFile (log).find ("span no volume"), std::string::npos) << readFile (log);
-}
-
 TEST (Mpi, MissingOrMalformedInputIsAClearError)
 {
   const fs::path log = scratch () / "missing.log", out = scratch () / "m.ply";
@@ -320,6 +309,33 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnClosedShapes)
   for (const Point3& p : test::torusSample (3000, 16))
     points.push_back ({p[0] + 3, p[1], p[2]});
   expectIdenticalSurface (writeCloud ("apart_surface", points), {2, 4});
+}
+
+TEST (Mpi, PointsSpanningNoVolumeAreWrappedAsOneProcessWrapsThem)
+{
+  // A plane, a line, three points and one (twice) span no volume: Del S has no tetrahedron, and rank 0 wraps
+  // them alone. Two parallel planes do, though each tile may hold one plane alone. The output is
+  // the single process's in every case.
+  std::vector<Point3> flat, line, planes;
+  for (const Point3& p : test::cubeSample (200, 11))
+  {
+    flat.push_back ({p[0], p[1], 0.0});
+    line.push_back ({p[0], 2 * p[0], 4 * p[0]}); // exactly collinear
+    planes.push_back ({p[0], p[1], p[2] < 0.5 ? 0.0 : 1.0});
+  }
+  const std::vector<Point3> three = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, one = {{1, 2, 3}, {1, 2, 3}};
+  for (const auto& [name, points] : {std::pair{"flat", flat}, std::pair{"line", line}, std::pair{"planes", planes},
+                                     std::pair{"three", three}, std::pair{"one", one}})
+  {
+    const fs::path cloud = writeCloud (name, points);
+    expectIdentical (cloud, {1, 2, 3});
+    expectIdenticalSurface (cloud, {2, 3});
+  }
+  const fs::path log = scratch () / "flat.log";
+  ASSERT_EQ (runMpi (2, writeCloud ("flat", flat).string () + " " + (scratch () / "f.ply").string () + " --stats", log),
+             0)
+      << readFile (log);
+  EXPECT_NE (readFile (log).find ("rank 0 wrapped them alone"), std::string::npos) << readFile (log);
 }
 
 /** The "points" of a --stats-json and the lists after it (hidden, apart, off_surface). */

@@ -185,6 +185,44 @@ peakMegabytes ()
   return static_cast<double> (usage.ru_maxrss) / 1024.0;
 }
 
+/** Points that span no volume (all on a plane or a line, or fewer than four): rank 0 wraps them
+  * alone, as pcl_wrap does, and writes what it writes. The tiles' construction completes the
+  * stars of tetrahedra, and Del S then has none; its triangles or edges are a small fraction of a
+  * volume's simplices, which the other ranks would have held. */
+int
+wrapOnRoot (const Options& o, MPI_Comm comm, const mpi::InputSource& source, int dimension)
+{
+  int ranks = 0, rank = 0;
+  MPI_Comm_size (comm, &ranks);
+  MPI_Comm_rank (comm, &rank);
+  if (rank != 0)
+    return 0;
+  const apps::PointFile points = source.readAll ();
+  WrapParameters parameters = o.parameters;
+  parameters.keep_complex = !o.complex_json.empty ();
+  if (!parameters.viewpoint && points.viewpoint)
+    parameters.viewpoint = *points.viewpoint;
+  const WrapResult result = computeWrap (points.points, points.weights, parameters);
+  apps::writeSurfaceMesh (o.output, points, result);
+  if (!o.complex_json.empty ())
+    apps::writeAtomically (o.complex_json,
+                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.points.size ()); });
+  if (!o.stats_json.empty ())
+    apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+  const std::string alone =
+      "the points span no volume (Del S has dimension " + std::to_string (dimension) + "): rank 0 wrapped them alone";
+  if (o.stats)
+  {
+    apps::printSummary (std::cout, result.statistics);
+    std::cout << "tiles:         " << ranks << "; " << alone << "\n"
+              << "peak memory:   " << static_cast<long> (peakMegabytes ()) << " MB (rank 0)\n";
+  }
+  if (!o.quiet)
+    std::cerr << "pcl_wrap_mpi: wrote " << o.output << ": " << result.surface.triangles.size () << " triangles; "
+              << alone << '\n';
+  return 0;
+}
+
 int
 run (const Options& o, MPI_Comm comm)
 {
@@ -219,8 +257,11 @@ run (const Options& o, MPI_Comm comm)
         mpi::completeStars (comm, tile, routed.boxes, routed.w_max, routed.equal_weights, completion);
     dimension = static_cast<int> (mpi::largestOverRanks (comm, triangulation.dimension));
     if (dimension < 3)
-      throw std::runtime_error ("the points span no volume (Del S has dimension " + std::to_string (dimension) +
-                                "): run pcl_wrap, which handles that, on one process");
+    {
+      tile = {};
+      triangulation = {};
+      return wrapOnRoot (o, comm, source, dimension);
+    }
     for (std::uint32_t h : triangulation.hidden)
       if (h < tile.own)
         hidden.push_back (tile.points[h].index);
