@@ -60,6 +60,18 @@ writeCloud (const std::string& name, const std::vector<Point3>& points, const st
   return path;
 }
 
+/** \a count weights drawn uniformly from [0, \a largest), seeded by \a seed. */
+std::vector<double>
+randomWeights (std::size_t count, double largest, unsigned seed)
+{
+  std::mt19937 random (seed);
+  std::uniform_real_distribution<double> weight (0.0, largest);
+  std::vector<double> weights (count);
+  for (double& w : weights)
+    w = weight (random);
+  return weights;
+}
+
 std::string
 readFile (const fs::path& path)
 {
@@ -161,13 +173,8 @@ TEST (Mpi, TerrainOfSheets)
 
 TEST (Mpi, WeightedPointsSomeHidden)
 {
-  std::mt19937 random (5);
-  std::uniform_real_distribution<double> weight (0.0, 4e-3);
   const std::vector<Point3> points = test::cubeSample (2000, 5);
-  std::vector<double> weights (points.size ());
-  for (double& w : weights)
-    w = weight (random);
-  expectIdentical (writeCloud ("weighted", points, weights), {1, 2, 3, 4}, true);
+  expectIdentical (writeCloud ("weighted", points, randomWeights (points.size (), 4e-3, 5)), {1, 2, 3, 4}, true);
 }
 
 TEST (Mpi, CosphericalGrid)
@@ -375,6 +382,55 @@ TEST (Mpi, PointsLeftOffAreTheSingleProcesss)
   }
 }
 
+/** The "spacing" of a --stats-json: its value as written. */
+std::string
+spacingOfStatistics (const std::string& json)
+{
+  const std::size_t at = json.find ("\"spacing\":");
+  return at == std::string::npos ? "(none)" : json.substr (at, json.find (',', at) - at);
+}
+
+TEST (Mpi, ComplexAndSpacingAreTheSingleProcesss)
+{
+  // The whole --complex file (X with its classes' counts, W, the output, the wrap filtration
+  // and its sinks) and the median spacing, for the raw W and the default surface.
+  const std::vector<Point3> weighted = test::cubeSample (1500, 23);
+  const std::vector<std::pair<fs::path, bool>> clouds = {
+      {writeCloud ("complex_sphere", test::sphereSample (3000, 22, 3e-3)), false},
+      {writeCloud ("complex_weighted", weighted, randomWeights (weighted.size (), 4e-3, 23)), true}};
+  for (const auto& [cloud, weights_column] : clouds)
+  {
+    const apps::PointFile file = apps::readPointFile (cloud.string (), "", weights_column);
+    for (const bool raw : {true, false})
+    {
+      WrapParameters parameters;
+      parameters.output = raw ? Output::raw : Output::surface;
+      parameters.keep_complex = parameters.filtration = true;
+      const WrapResult single = computeWrap (file.points, file.weights, parameters);
+      ASSERT_FALSE (single.filtration.empty ());
+      ASSERT_GT (single.statistics.spacing, 0.0);
+      std::ostringstream expected;
+      apps::writeComplexJson (expected, single, file.points.size ());
+      for (int ranks : {1, 2, 3})
+      {
+        const fs::path json = scratch () / "complex.json", stats = scratch () / "complex_stats.json",
+                       log = scratch () / "complex.log";
+        ASSERT_EQ (runMpi (ranks,
+                           cloud.string () + " " + (scratch () / "c.ply").string () + (raw ? " --raw" : "") +
+                               (weights_column ? " --weights-column" : "") + " --quiet --complex " + json.string () +
+                               " --stats-json " + stats.string (),
+                           log),
+                   0)
+            << readFile (log);
+        EXPECT_TRUE (readFile (json) == expected.str ())
+            << cloud << " on " << ranks << " ranks" << (raw ? ", raw" : "") << ": the complex differs";
+        EXPECT_EQ (spacingOfStatistics (readFile (stats)), spacingOfStatistics (statisticsJson (single)))
+            << cloud << " on " << ranks << " ranks";
+      }
+    }
+  }
+}
+
 TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnNoiseOfASpacing)
 {
   // Noise of a spacing (40,000 points on the unit sphere are about 0.009 apart): the repair
@@ -398,13 +454,9 @@ TEST (Mpi, DefaultSurfaceIsTheSingleProcesssOnASingleLayerAndOddInput)
     points.push_back (points[7 * i]);
   points.push_back ({std::nan (""), 0, 0});
   expectIdenticalSurface (writeCloud ("duplicates_surface", points), {2});
-  std::mt19937 random (19);
-  std::uniform_real_distribution<double> weight (0.0, 1e-3);
   const std::vector<Point3> weighted = test::sphereSample (2000, 20, 1e-3);
-  std::vector<double> weights (weighted.size ());
-  for (double& w : weights)
-    w = weight (random);
-  expectIdenticalSurface (writeCloud ("weighted_surface", weighted, weights), {2}, true);
+  expectIdenticalSurface (writeCloud ("weighted_surface", weighted, randomWeights (weighted.size (), 1e-3, 19)), {2},
+                          true);
 }
 
 TEST (Mpi, ThresholdsAreTheSingleProcesss)

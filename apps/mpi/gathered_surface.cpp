@@ -7,6 +7,7 @@
 #include "delaunay/regular_triangulation.h"
 #include "delaunay/tetrahedra.h"
 #include "delaunay/z_order.h"
+#include "filtration_data.h"
 #include "input_indices.h"
 #include "surface/default_surface.h"
 #include "surface/solid_labelling.h"
@@ -15,8 +16,10 @@
 #include "wrap/boundary.h"
 #include "wrap/classification.h"
 #include "wrap/sink_deletion.h"
+#include "wrap/wrap_filtration.h"
 
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -75,6 +78,28 @@ flagWithFaces (const detail::Tetrahedra& tetrahedra, const std::uint32_t* v, int
     const detail::Simplex f = tetrahedra.complex ().face (3, t, sub);
     members[f.dim][f.id] = 1;
   }
+}
+
+/** Sets WrapResult::complex of \a result as one process sets it: X with every simplex's class,
+  * and with \a filtration the wrap filtration (each simplex's value, the sink counts). The
+  * classes are found again on the gathered complex, from the same predicates. */
+void
+keepComplex (const std::shared_ptr<const detail::SimplicialComplex>& complex, const std::vector<Point3>& positions,
+             const std::vector<double>& weights, const detail::Subcomplex& x, const detail::InputIndices& indices,
+             bool filtration, WrapResult& result)
+{
+  const detail::PowerPredicates predicates (positions, weights);
+  const auto classification = std::make_shared<const detail::Classification> (detail::classify (*complex, predicates));
+  result.complex = indices.complex (*complex, *classification, x);
+  if (!filtration)
+    return;
+  const auto values = std::make_shared<const detail::WrapFiltration> (
+      detail::wrapFiltration (*complex, *classification, positions, weights));
+  for (int k = 0; k <= 3; ++k)
+    result.complex[k].values = values->value[k];
+  result.filtration = Filtration (
+      std::make_shared<const Filtration::Data> (Filtration::Data{complex, classification, values, indices}));
+  detail::recordSinks (*values, result.statistics);
 }
 
 } // namespace
@@ -160,8 +185,10 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
     if (label_now)
       clock.stageDone ("votes");
   }
-  const detail::SimplicialComplex complex (3, static_cast<std::uint32_t> (positions.size ()), std::move (top),
-                                           adjacency.neighbourArray ());
+  const auto shared_complex =
+      std::make_shared<const detail::SimplicialComplex> (3, static_cast<std::uint32_t> (positions.size ()),
+                                                         std::move (top), adjacency.neighbourArray ());
+  const detail::SimplicialComplex& complex = *shared_complex;
   adjacency.attach (complex);
 
   // X: the closure of its tetrahedra and of W's simplices on none of them.
@@ -184,6 +211,11 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   clock.stageDone ("complex");
   detail::InputIndices indices (std::move (input_of_vertex));
   WrapStatistics& stats = result.statistics;
+  if (parameters.keep_complex)
+  {
+    keepComplex (shared_complex, positions, weights, x, indices, parameters.filtration, result);
+    clock.stageDone ("filtration");
+  }
   if (parameters.threshold.deletes ())
   {
     // The sink deletion of one process (design.md §9) on the same complex and X, the classes

@@ -33,7 +33,9 @@ tileSolid (const TileComplex& tile, const detail::Subcomplex& y);
 
 /** \brief On rank 0, from every tile's TileSolid: pcl_wrap's output after the construction, the
   * sink deletion of a threshold (if \a parameters set one) and the default surface
-  * (docs/surface.md), or the paper's W (Output::raw).
+  * (docs/surface.md), or the paper's W (Output::raw); with WrapParameters::keep_complex, the
+  * complex as pcl_wrap lists it too, the classes found again (and with WrapParameters::filtration
+  * the wrap filtration).
   *
   * These run as in one process, on the same numbering: the points are selected from \a file as
   * pcl_wrap selects them, the vertices (all but the \a hidden points) numbered along the same
@@ -42,7 +44,7 @@ tileSolid (const TileComplex& tile, const detail::Subcomplex& y);
   * them (the \a sheets, and the dangling edges and isolated vertices of \a raw_w, all in indices
   * of S). So the output is pcl_wrap's, triangle for triangle.
   * \param[in] solid every tile's, in any order
-  * \param[in,out] result its surface, copies and statistics of these stages set */
+  * \param[in,out] result its surface, copies, complex and statistics of these stages set */
 void
 surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidden, TileSolid solid,
                const std::vector<std::array<std::uint32_t, 3>>& sheets, const WrapSurface& raw_w,

@@ -10,6 +10,7 @@
 #include "tile_complex.h"
 #include "tile_input.h"
 #include "tile_routing.h"
+#include "tile_spacing.h"
 #include "tile_wrap.h"
 
 #include "mesh_file.h"
@@ -63,7 +64,8 @@ const char* const USAGE =
     "                        the surface stage)\n"
     "  --stats               print what the construction did, per tile and in total\n"
     "  --stats-json FILE     the statistics as JSON, as pcl_wrap writes them\n"
-    "  --complex FILE        X and W as JSON, as pcl_wrap --complex writes them (no classes)\n"
+    "  --complex FILE        the complex as JSON, as pcl_wrap --complex writes it (gathered on\n"
+    "                        rank 0: for small inputs)\n"
     "  --weights-column      .xyz/.txt: the 4th column holds weights\n"
     "  --weight-field NAME   .pcd/.ply: the field holding weights\n"
     "  --quiet               nothing on stderr but errors\n"
@@ -130,6 +132,7 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
   if (o.parameters.threshold.deletes () && !o.complex_json.empty ())
     return usageError ("--complex lists X before a threshold's deletion: give one or the other");
   o.parameters.output = o.raw ? Output::raw : Output::surface;
+  o.parameters.keep_complex = o.parameters.filtration = !o.complex_json.empty ();
   o.input = positional[0];
   o.output = positional[1];
   if (!apps::isMeshFormat (o.output))
@@ -139,17 +142,6 @@ parseOptions (int argc, char** argv, Options& o, int rank, int& exit_code)
     if (!written.empty () && std::filesystem::equivalent (written, o.input, error))
       return usageError (written + " is the input: it would be overwritten");
   return true;
-}
-
-/** The flat k-simplex lists of all ranks on rank 0, as a SimplexList of X. */
-SimplexList
-gatheredX (MPI_Comm comm, const std::vector<std::uint32_t>& local, int k)
-{
-  SimplexList list;
-  list.vertices = mpi::gatherToRoot (comm, local);
-  list.classes.assign (list.vertices.size () / (k + 1), SimplexClass::centered);
-  list.in_x.assign (list.classes.size (), 1);
-  return list;
 }
 
 /** Gathers the tiles' parts of W on rank 0, sheets turned as one process turns them. */
@@ -268,6 +260,7 @@ run (const Options& o, MPI_Comm comm)
     clock.stageDone ("triangulation");
     part = std::make_unique<mpi::TileComplex> (tile, triangulation, static_cast<std::uint32_t> (rank));
   }
+  stats.spacing = mpi::tileMedianSpacing (comm, *part);
   tile = {};
   std::unique_ptr<detail::Classification> classification;
   {
@@ -276,8 +269,9 @@ run (const Options& o, MPI_Comm comm)
   }
   clock.stageDone ("classification");
 
-  // The default surface, and a threshold's deletion, run on rank 0 from every tile's tetrahedra.
-  const bool on_root = !o.raw || o.parameters.threshold.deletes ();
+  // The default surface, a threshold's deletion and the complex's listing (with its classes and
+  // the wrap filtration) run on rank 0 from every tile's tetrahedra.
+  const bool on_root = !o.raw || o.parameters.threshold.deletes () || o.parameters.keep_complex;
   mpi::TileSolid solid;
   std::vector<std::array<std::uint32_t, 3>> sheets;
   std::uint64_t collapses = 0, removals = 0;
@@ -291,10 +285,7 @@ run (const Options& o, MPI_Comm comm)
     retraction_rounds = retraction.rounds ();
     clock.stageDone ("retraction");
 
-    const mpi::TileWrap wrap = mpi::extractTileWrap (*part, y, !o.complex_json.empty ());
-    for (int k = 0; k <= 3; ++k)
-      if (!o.complex_json.empty ())
-        result.complex[k] = gatheredX (comm, wrap.x[k], k);
+    const mpi::TileWrap wrap = mpi::extractTileWrap (*part, y);
     result.w = gatheredW (comm, wrap);
     result.surface = result.w;
     for (int k = 0; k <= 3; ++k)
@@ -319,7 +310,7 @@ run (const Options& o, MPI_Comm comm)
       stats.simplices[k][c] = mpi::sumOverRanks (comm, classes[3 * k + c]);
   classification.reset ();
   part.reset ();
-  if (on_root) // the tetrahedra to rank 0, which runs the surface stage on them
+  if (on_root) // the tetrahedra to rank 0, which runs the stages above on them
   {
     solid.tetrahedra = mpi::gatherToRoot (comm, solid.tetrahedra);
     solid.in_x = mpi::gatherToRoot (comm, solid.in_x);

@@ -12,7 +12,7 @@ namespace pcl_wrap::mpi
 using detail::Simplex;
 
 TileWrap
-extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y, bool with_x)
+extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y)
 {
   const detail::SimplicialComplex& complex = tile.complex ();
   TileWrap out;
@@ -24,8 +24,6 @@ extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y, bool with
         continue;
       const std::uint32_t* v = complex.vertices (k, s);
       ++out.x_count[k];
-      for (int i = 0; with_x && i <= k; ++i)
-        out.x[k].push_back (tile.indexOf (v[i]));
       if (y.cofaceCount (simplex) != 0 || k == 3)
         continue;
       if (k == 2)

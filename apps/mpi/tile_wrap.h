@@ -16,10 +16,7 @@ namespace pcl_wrap::mpi
 /** \brief The simplices of X and W that belong to one tile, in indices of S. */
 struct TileWrap
 {
-  /** Per dimension, the number of simplices of X, and (when asked) k + 1 indices per simplex
-    * (tetrahedra positively oriented). */
-  std::array<std::size_t, 4> x_count{};
-  std::array<std::vector<std::uint32_t>, 4> x;
+  std::array<std::size_t, 4> x_count{}; ///< per dimension, the number of simplices of X
   /** W's triangles with a tetrahedron of X behind them, facing away from it. */
   std::vector<std::array<std::uint32_t, 3>> faces;
   /** W's triangles on no tetrahedron of X, not yet turned (orientSheetTriangles() does that once
@@ -29,9 +26,8 @@ struct TileWrap
   std::vector<std::uint32_t> isolated_vertices;
 };
 
-/** \brief What of X (the retracted \a y) and of W = Bd X belongs to this tile; X's simplices
-  * listed only \a with_x. */
+/** \brief What of X (the retracted \a y) and of W = Bd X belongs to this tile. */
 TileWrap
-extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y, bool with_x);
+extractTileWrap (const TileComplex& tile, const detail::Subcomplex& y);
 
 } // namespace pcl_wrap::mpi
