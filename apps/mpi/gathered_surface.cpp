@@ -218,7 +218,7 @@ surfaceOnRoot (const apps::PointFile& file, const std::vector<PointIndex>& hidde
   }
   if (parameters.threshold.deletes ())
   {
-    // The sink deletion of one process (design.md §9) on the same complex and X, the classes
+    // The sink deletion of one process (design.md §6) on the same complex and X, the classes
     // found again from the same predicates.
     const detail::PowerPredicates predicates (positions, weights);
     const detail::Classification classification = detail::classify (complex, predicates);

@@ -191,7 +191,6 @@ wrapOnRoot (const Options& o, MPI_Comm comm, const mpi::InputSource& source, int
     return 0;
   const apps::PointFile points = source.readAll ();
   WrapParameters parameters = o.parameters;
-  parameters.keep_complex = !o.complex_json.empty ();
   if (!parameters.viewpoint && points.viewpoint)
     parameters.viewpoint = *points.viewpoint;
   const WrapResult result = computeWrap (points.points, points.weights, parameters);
