@@ -177,6 +177,19 @@ peakMegabytes ()
   return static_cast<double> (usage.ru_maxrss) / 1024.0;
 }
 
+/** Rank 0's files: OUTPUT and, when asked, the complex and the statistics, as pcl_wrap writes
+  * them for \a points (the whole input). */
+void
+writeOutputs (const Options& o, const apps::PointFile& points, const WrapResult& result)
+{
+  apps::writeSurfaceMesh (o.output, points, result);
+  if (!o.complex_json.empty ())
+    apps::writeAtomically (o.complex_json,
+                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.points.size ()); });
+  if (!o.stats_json.empty ())
+    apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+}
+
 /** Points that span no volume (all on a plane or a line, or fewer than four): rank 0 wraps them
   * alone, as pcl_wrap does, and writes what it writes. The tiles' construction completes the
   * stars of tetrahedra, and Del S then has none; its triangles or edges are a small fraction of a
@@ -194,12 +207,7 @@ wrapOnRoot (const Options& o, MPI_Comm comm, const mpi::InputSource& source, int
   if (!parameters.viewpoint && points.viewpoint)
     parameters.viewpoint = *points.viewpoint;
   const WrapResult result = computeWrap (points.points, points.weights, parameters);
-  apps::writeSurfaceMesh (o.output, points, result);
-  if (!o.complex_json.empty ())
-    apps::writeAtomically (o.complex_json,
-                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, points.points.size ()); });
-  if (!o.stats_json.empty ())
-    apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+  writeOutputs (o, points, result);
   const std::string alone =
       "the points span no volume (Del S has dimension " + std::to_string (dimension) + "): rank 0 wrapped them alone";
   if (o.stats)
@@ -345,12 +353,7 @@ run (const Options& o, MPI_Comm comm)
   stats.total_seconds = 0;
   for (const StageTiming& t : stats.timings)
     stats.total_seconds += t.seconds;
-  apps::writeSurfaceMesh (o.output, points, result);
-  if (!o.complex_json.empty ())
-    apps::writeAtomically (o.complex_json,
-                           [&] (std::ostream& out) { apps::writeComplexJson (out, result, points_input); });
-  if (!o.stats_json.empty ())
-    apps::writeAtomically (o.stats_json, [&] (std::ostream& out) { out << statisticsJson (result) << '\n'; });
+  writeOutputs (o, points, result);
   if (o.stats)
   {
     apps::printSummary (std::cout, stats);

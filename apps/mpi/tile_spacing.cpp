@@ -4,6 +4,8 @@
 
 #include "message_exchange.h"
 
+#include "delaunay/spacing.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -37,19 +39,12 @@ valueOf (std::uint64_t bits)
 double
 tileMedianSpacing (MPI_Comm comm, const TileComplex& tile)
 {
+  // Each tile's own points have their whole stars here, so their nearest neighbours among their
+  // edges are those of Del S, measured as one process measures them.
   const detail::SimplicialComplex& complex = tile.complex ();
-  const std::vector<Point3>& p = tile.positions ();
   constexpr double NONE = std::numeric_limits<double>::infinity ();
-  std::vector<double> nearest (complex.numVertices (), NONE); // squared, as spacing.cpp computes it
-  for (detail::SimplexId e = 0; complex.dimension () >= 1 && e < complex.size (1); ++e)
-  {
-    const std::uint32_t* v = complex.vertices (1, e);
-    const Point3 &a = p[v[0]], &b = p[v[1]];
-    const double squared =
-        (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
-    nearest[v[0]] = std::min (nearest[v[0]], squared);
-    nearest[v[1]] = std::min (nearest[v[1]], squared);
-  }
+  const std::vector<double> nearest =
+      detail::nearestNeighbourSquared (complex.vertices (1, 0), complex.size (1), 1, tile.positions ());
   std::vector<double> own;
   for (std::uint32_t v = 0; v < nearest.size (); ++v)
     if (nearest[v] != NONE && tile.belongsHere ({0, v}))

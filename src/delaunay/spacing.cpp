@@ -14,19 +14,16 @@
 namespace pcl_wrap::detail
 {
 
-double
-medianNearestNeighbourDistance (const std::uint32_t* simplices, std::size_t count, int dimension,
-                                const std::vector<Point3>& positions)
+std::vector<double>
+nearestNeighbourSquared (const std::uint32_t* simplices, std::size_t count, int dimension,
+                         const std::vector<Point3>& positions)
 {
-  if (dimension < 1)
-    return 0.0;
   constexpr double NONE = std::numeric_limits<double>::infinity ();
-  std::vector<double> nearest (positions.size (), NONE); // squared
+  std::vector<double> nearest (positions.size (), NONE);
   const auto offer = [&] (std::uint32_t v, double squared) {
     double seen = relaxedLoad (&nearest[v]);
     while (squared < seen && !relaxedCompareExchange (&nearest[v], seen, squared))
-    {
-    }
+    {}
   };
   const auto k = static_cast<std::size_t> (dimension) + 1;
   parallelForEach (count, [&] (std::size_t s) {
@@ -41,6 +38,17 @@ medianNearestNeighbourDistance (const std::uint32_t* simplices, std::size_t coun
         offer (v[j], squared);
       }
   });
+  return nearest;
+}
+
+double
+medianNearestNeighbourDistance (const std::uint32_t* simplices, std::size_t count, int dimension,
+                                const std::vector<Point3>& positions)
+{
+  if (dimension < 1)
+    return 0.0;
+  constexpr double NONE = std::numeric_limits<double>::infinity ();
+  std::vector<double> nearest = nearestNeighbourSquared (simplices, count, dimension, positions);
   nearest.erase (std::remove (nearest.begin (), nearest.end (), NONE), nearest.end ());
   if (nearest.empty ())
     return 0.0;
