@@ -48,8 +48,9 @@ public:
   std::size_t size (int k) const { return k < 0 || k > 3 ? 0 : vertices_[k].size () / (k + 1); }
   std::uint32_t numVertices () const { return static_cast<std::uint32_t> (size (0)); }
 
-  /** \brief The k+1 vertex ids of simplex \a s of dimension \a k. */
-  const std::uint32_t* vertices (int k, SimplexId s) const { return &vertices_[k][(k + 1) * std::size_t (s)]; }
+  /** \brief The k+1 vertex ids of simplex \a s of dimension \a k (a valid pointer to no simplex
+   *  when \a s is size (k)). */
+  const std::uint32_t* vertices (int k, SimplexId s) const { return vertices_[k].data () + (k + 1) * std::size_t (s); }
   std::uint32_t vertex (int k, SimplexId s, int i) const { return vertices (k, s)[i]; }
   /** \brief The vertex ids of all simplices of dimension \a k, k + 1 per simplex. */
   const FilledInParallel<std::uint32_t>& vertexArray (int k) const { return vertices_[k]; }
