@@ -10,11 +10,13 @@
 #include "delaunay/input_points.h"
 #include "delaunay/regular_triangulation.h"
 #include "delaunay/simplicial_complex.h"
+#include "delaunay/spacing.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <set>
@@ -107,6 +109,34 @@ TEST (SimplicialComplex, FacesAndEdgesWhateverTheOrderOfTheTetrahedra)
     EXPECT_EQ (static_cast<long> (grouped.size (0)) - static_cast<long> (grouped.size (1)) +
                    static_cast<long> (grouped.size (2)) - static_cast<long> (grouped.size (3)),
                1);
+  }
+}
+
+// One point has no edge, two have no triangle: the start of a dimension with no simplices is a
+// range of none, which the nearest-neighbour pass takes as it does a tile of one point. (The
+// sanitizer build checks that nothing there indexes an empty array.)
+TEST (SimplicialComplex, ADimensionWithNoSimplicesIsAnEmptyRange)
+{
+  for (const std::vector<Point3>& points : {std::vector<Point3>{{1, 2, 3}}, std::vector<Point3>{{1, 2, 3}, {1, 2, 5}}})
+  {
+    const detail::InputPoints input = detail::selectInputPoints (points, {});
+    const detail::Triangulation t = detail::triangulate (input.positions, input.weights);
+    const auto n = static_cast<std::uint32_t> (t.point_of_vertex.size ());
+    ASSERT_EQ (n, points.size ());
+    ASSERT_EQ (t.dimension, static_cast<int> (n) - 1);
+    const SimplicialComplex c (t.dimension, n, t.top_simplices, t.neighbours);
+    for (int k = c.dimension () + 1; k <= 3; ++k)
+    {
+      ASSERT_EQ (c.size (k), 0u) << "dimension " << k;
+      EXPECT_EQ (c.vertices (k, 0), c.vertexArray (k).data ()) << "dimension " << k;
+    }
+    const std::vector<double> nearest =
+        detail::nearestNeighbourSquared (c.vertices (1, 0), c.size (1), 1, input.positions);
+    ASSERT_EQ (nearest.size (), n);
+    for (double d : nearest)
+      EXPECT_EQ (d, n == 1 ? INFINITY : 4.0);
+    EXPECT_EQ (detail::medianNearestNeighbourDistance (c.vertices (1, 0), c.size (1), 1, input.positions),
+               n == 1 ? 0.0 : 2.0);
   }
 }
 
