@@ -93,8 +93,9 @@ constexpr int WIDE_TUNNEL_RINGS = 2 * HANDLE_RINGS;
 
 /** \brief wideTunnelPatches() looks at a part's sharp saddles only when at most one of its
   * vertices in this many is one: they mark the ends of tubes on a smooth surface, which has few
-  * (0.6% of the vertices of a sphere with radial noise of half a spacing), not where noise makes
-  * them common (one vertex in nine with noise of a spacing). */
-constexpr long WIDE_TUNNEL_SADDLE_SHARE = 64;
+  * (one vertex in 500 of a torus with noise of a quarter spacing; one in 28 to 50 of a torus, a
+  * mug or a helmet with noise of half a spacing), not where noise makes them common (one vertex in
+  * nine with noise of a spacing). */
+constexpr long WIDE_TUNNEL_SADDLE_SHARE = 16;
 
 } // namespace pcl_wrap::detail
